@@ -1,0 +1,38 @@
+#pragma once
+// The subcommands of `rsi`. Each reads its inputs, computes everything,
+// then writes its outputs whole; input errors surface as CaseError or
+// UsageError (exit status 2), numerical failures as ModalError (exit 3).
+
+#include <stdexcept>
+#include <string>
+
+namespace rsi {
+
+/// A command-line value outside its allowed range.
+class UsageError : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct ModesOptions {
+  std::string case_path;
+  std::string part = "bladed-disk";
+  int count = 50;
+  std::string out = "out/modes";
+};
+
+struct ExportOptions {
+  std::string case_path;
+  std::string out = "out/export";
+};
+
+struct CalibrateOptions {
+  std::string case_path;
+  double target_hz = 44.0;
+};
+
+int run_modes(const ModesOptions& options);
+int run_export(const ExportOptions& options);
+int run_calibrate(const CalibrateOptions& options);
+
+} // namespace rsi

@@ -1,0 +1,69 @@
+// rsi: component mode synthesis in rotor/stator contact, reference and
+// reduced solvers with their verification (see README.md and SPEC).
+//
+// Exit status: 0 success, 2 bad input (case file, option, output
+// directory), 3 numerical failure, 1 anything else.
+
+#include <cstdio>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "case_file.hpp"
+#include "commands.hpp"
+#include "modal_analysis.hpp"
+#include "output_files.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
+  app.require_subcommand(1);
+
+  rsi::ModesOptions modes;
+  CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one part -> DIR/modes.csv");
+  modes_cmd->add_option("case", modes.case_path, "case file (JSON)")->required();
+  modes_cmd->add_option("--part", modes.part, "bladed-disk or casing")->capture_default_str();
+  modes_cmd->add_option("--count", modes.count, "number of modes, 1..number of dofs")->capture_default_str();
+  modes_cmd->add_option("--out", modes.out, "output directory")->capture_default_str();
+
+  rsi::ExportOptions export_options;
+  CLI::App* export_cmd =
+      app.add_subcommand("export", "K.mtx, M.mtx, dofs.csv of both parts -> DIR/{bladed-disk,casing}/");
+  export_cmd->add_option("case", export_options.case_path, "case file (JSON)")->required();
+  export_cmd->add_option("--out", export_options.out, "output directory")->capture_default_str();
+
+  rsi::CalibrateOptions calibrate;
+  CLI::App* calibrate_cmd =
+      app.add_subcommand("calibrate", "Blade thickness that centres the first family of frequencies on a target");
+  calibrate_cmd->add_option("case", calibrate.case_path, "case file (JSON)")->required();
+  calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz]")->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version exit 0; every malformed command line exits 2.
+    const int status = app.exit(e);
+    return status == 0 ? 0 : 2;
+  }
+
+  try {
+    if (*modes_cmd) return rsi::run_modes(modes);
+    if (*export_cmd) return rsi::run_export(export_options);
+    if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
+  } catch (const rsi::CaseError& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 2;
+  } catch (const rsi::UsageError& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 2;
+  } catch (const rsi::OutputError& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 2;
+  } catch (const rsi::ModalError& e) {
+    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,27 @@
+#pragma once
+// Output files of the CLI, each written whole: to a temporary file in the
+// same directory, then renamed over the target (SPEC §5), so a reader never
+// sees a half-written file.
+
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/SparseCore>
+
+namespace rsi {
+
+/// An output that cannot be written (directory not creatable, disk full).
+class OutputError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Creates `dir` (and parents); throws OutputError naming `option`.
+void make_output_directory(const std::string& dir, const std::string& option);
+
+void write_text_file(const std::string& path, const std::string& content);
+
+/// Matrix Market coordinate real symmetric (lower triangle), 17 significant digits.
+void write_symmetric_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix);
+
+} // namespace rsi

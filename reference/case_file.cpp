@@ -1,0 +1,195 @@
+#include "case_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+namespace rsi {
+namespace {
+
+using nlohmann::json;
+
+constexpr double inf = std::numeric_limits<double>::infinity();
+constexpr double deg = M_PI / 180.0;
+
+/// Allowed interval of a number; `open_low` excludes the lower bound.
+struct Range {
+  double low;
+  double high;
+  bool open_low;
+  bool open_high;
+  std::string unit;
+
+  bool contains(double x) const {
+    return (open_low ? x > low : x >= low) && (open_high ? x < high : x <= high);
+  }
+  std::string text() const {
+    std::ostringstream s;
+    s << (open_low ? "(" : "[") << low << ", " << high << (open_high ? ")" : "]");
+    if (!unit.empty()) s << " " << unit;
+    return s.str();
+  }
+};
+
+Range positive(const std::string& unit) { return {0.0, inf, true, true, unit}; }
+
+/// One JSON object of the case file, read key by key; `finish()` rejects
+/// the keys that were never asked for (unknown keys).
+class ObjectReader {
+public:
+  ObjectReader(const json& object, std::string path, const std::string& source)
+      : m_object(object), m_path(std::move(path)), m_source(source) {
+    if (!m_object.is_object())
+      fail(m_path.empty() ? "(top level)" : m_path, "must be a JSON object");
+  }
+
+  double number(const std::string& key, const Range& range) {
+    const json& value = get(key);
+    if (!value.is_number())
+      fail(full(key), "must be a number in " + range.text() + ", got " + value.dump());
+    const double x = value.get<double>();
+    if (!std::isfinite(x) || !range.contains(x))
+      fail(full(key), "must be in " + range.text() + ", got " + value.dump());
+    return x;
+  }
+
+  int integer(const std::string& key, long low, long high) {
+    const json& value = get(key);
+    const std::string allowed = "an integer in [" + std::to_string(low) + ", " +
+                                std::to_string(high) + "]";
+    if (!value.is_number_integer()) fail(full(key), "must be " + allowed + ", got " + value.dump());
+    const long x = value.get<long>();
+    if (x < low || x > high) fail(full(key), "must be " + allowed + ", got " + value.dump());
+    return static_cast<int>(x);
+  }
+
+  /// An optional free-text note (how a calibrated value was found).
+  void optional_note(const std::string& key) {
+    m_seen.insert(key);
+    if (m_object.contains(key) && !m_object.at(key).is_string())
+      fail(full(key), "must be a string (a note), got " + m_object.at(key).dump());
+  }
+
+  ObjectReader object(const std::string& key) { return ObjectReader(get(key), full(key), m_source); }
+
+  Section section(const std::string& key) {
+    ObjectReader s = object(key);
+    Section result;
+    result.width = s.number("width", positive("m"));
+    result.thickness = s.number("thickness", positive("m"));
+    s.optional_note("thickness_note");
+    s.finish();
+    return result;
+  }
+
+  void finish() const {
+    for (const auto& item : m_object.items())
+      if (!m_seen.count(item.key())) fail(full(item.key()), "unknown key");
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw CaseError(m_source + ": key '" + key + "': " + what);
+  }
+
+  std::string full(const std::string& key) const { return m_path.empty() ? key : m_path + "." + key; }
+
+private:
+  const json& get(const std::string& key) {
+    m_seen.insert(key);
+    if (!m_object.contains(key)) fail(full(key), "missing (required)");
+    return m_object.at(key);
+  }
+
+  const json& m_object;
+  std::string m_path;
+  const std::string& m_source;
+  std::set<std::string> m_seen;
+};
+
+BladedDiskSpec read_bladed_disk(ObjectReader r) {
+  BladedDiskSpec b;
+  b.n_blades = r.integer("n_blades", 2, 1000);
+  b.hub_radius = r.number("hub_radius", positive("m"));
+  b.rim_radius = r.number("rim_radius", {b.hub_radius, inf, true, true, "m (above hub_radius)"});
+  b.tip_radius = r.number("tip_radius", {b.rim_radius, inf, true, true, "m (above rim_radius)"});
+  b.n_blade_elements = r.integer("n_blade_elements", 1, 1000);
+  b.kink_angle = r.number("kink_angle_deg", {-30.0, 30.0, false, false, "degrees"}) * deg;
+  b.blade = r.section("blade_section");
+  b.disk = r.section("disk_section");
+  b.rim_ring = r.section("rim_ring_section");
+  r.finish();
+  return b;
+}
+
+CasingSpec read_casing(ObjectReader r, double tip_radius) {
+  CasingSpec c;
+  c.radius = r.number("radius", {tip_radius, inf, true, true,
+                                 "m (above bladed_disk.tip_radius: the clearance must be positive)"});
+  c.n_elements = r.integer("n_elements", 3, 100000);
+  c.section = r.section("section");
+  const double clamp_deg = r.number("clamp_angle_deg", {0.0, 360.0, false, true, "degrees"});
+  const double pitch_deg = 360.0 / c.n_elements;
+  if (std::abs(clamp_deg / pitch_deg - std::round(clamp_deg / pitch_deg)) > 1e-9)
+    r.fail(r.full("clamp_angle_deg"), "must be the angle of a casing node, a multiple of 360/n_elements = " +
+                                          std::to_string(pitch_deg) + " degrees");
+  c.clamp_angle = clamp_deg * deg;
+  r.finish();
+  return c;
+}
+
+} // namespace
+
+Case parse_case(const json& document, const std::string& source) {
+  ObjectReader top(document, "", source);
+  Case c;
+  c.source = source;
+  top.optional_note("description");
+
+  ObjectReader material = top.object("material");
+  c.material.young_modulus = material.number("young_modulus", positive("Pa"));
+  c.material.density = material.number("density", positive("kg/m^3"));
+  material.finish();
+
+  c.bladed_disk = read_bladed_disk(top.object("bladed_disk"));
+  c.casing = read_casing(top.object("casing"), c.bladed_disk.tip_radius);
+
+  ObjectReader op = top.object("operating_point");
+  c.operating_point.rotation_speed = op.number("rotation_speed", {0.0, 1e5, false, false, "rad/s"});
+  c.operating_point.friction_coefficient =
+      op.number("friction_coefficient", {0.0, 2.0, false, false, ""});
+  op.finish();
+
+  ObjectReader forcing = top.object("forcing");
+  c.forcing.amplitude = forcing.number("amplitude", {0.0, inf, false, true, "N"});
+  forcing.optional_note("amplitude_note");
+  c.forcing.nodal_diameter = forcing.integer("nodal_diameter", 0, c.casing.n_elements / 2);
+  c.forcing.duration = forcing.number("duration", {0.0, inf, false, true, "s"});
+  forcing.finish();
+
+  ObjectReader time = top.object("time");
+  c.time.step = time.number("step", positive("s"));
+  c.time.duration = time.number("duration", {c.time.step, inf, false, true, "s (at least one step)"});
+  c.time.output_every = time.integer("output_every", 1, 100000000);
+  time.finish();
+
+  top.finish();
+  return c;
+}
+
+Case load_case(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw CaseError(path + ": cannot open the case file (missing or unreadable)");
+  json document;
+  try {
+    document = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw CaseError(path + ": malformed JSON: " + e.what());
+  }
+  return parse_case(document, path);
+}
+
+} // namespace rsi

@@ -1,0 +1,93 @@
+#pragma once
+// The case file: every parameter of the model and the run (SPEC §2), read
+// from JSON and validated. The schema is documented in data/README.md.
+//
+// Units are SI throughout; angles in the file are in degrees and are
+// converted to radians here. A rejected file raises CaseError whose message
+// names the file, the key (dotted path) and the allowed range.
+
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace rsi {
+
+/// Bad input in a case file: unknown, missing, mistyped or out-of-range key.
+class CaseError : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+/// Rectangular beam section: `width` out of plane, `thickness` in plane [m].
+struct Section {
+  double width = 0.0;
+  double thickness = 0.0;
+};
+
+/// Linear elastic isotropic material.
+struct Material {
+  double young_modulus = 0.0; ///< E [Pa]
+  double density = 0.0;       ///< rho [kg/m^3]
+};
+
+/// Bladed disk of SPEC §2: n_blades identical sectors, one disk element from
+/// hub to rim, n_blade_elements kinked blade elements from rim to tip.
+struct BladedDiskSpec {
+  int n_blades = 0;
+  double hub_radius = 0.0; ///< r_h [m]
+  double rim_radius = 0.0; ///< r_r [m]
+  double tip_radius = 0.0; ///< R_t [m], radius of every undeformed tip node
+  int n_blade_elements = 0;
+  double kink_angle = 0.0; ///< a [rad]; > 0 turns the blade clockwise (tip trails)
+  Section blade;
+  Section disk;
+  Section rim_ring;
+};
+
+/// Casing ring of curved beam elements, clamped at one node.
+struct CasingSpec {
+  double radius = 0.0; ///< R_c [m]
+  int n_elements = 0;
+  Section section;
+  double clamp_angle = 0.0; ///< polar angle of the clamped node [rad]
+};
+
+struct OperatingPoint {
+  double rotation_speed = 0.0;       ///< Omega [rad/s], counter-clockwise
+  double friction_coefficient = 0.0; ///< mu [-]
+};
+
+/// Radial nodal forces amplitude * cos(nodal_diameter * theta_j) on every
+/// casing node j for 0 <= t <= duration.
+struct Forcing {
+  double amplitude = 0.0; ///< F0 [N]
+  int nodal_diameter = 0;
+  double duration = 0.0; ///< [s]
+};
+
+struct TimeStepping {
+  double step = 0.0;     ///< Delta t [s]
+  double duration = 0.0; ///< simulated time [s]
+  int output_every = 0;  ///< one history row every this many steps
+};
+
+struct Case {
+  std::string source; ///< where the case was read from, for messages
+  Material material;
+  BladedDiskSpec bladed_disk;
+  CasingSpec casing;
+  OperatingPoint operating_point;
+  Forcing forcing;
+  TimeStepping time;
+};
+
+/// Validates `document` against the schema of data/README.md.
+/// Throws CaseError naming `source`, the key and the allowed range.
+Case parse_case(const nlohmann::json& document, const std::string& source);
+
+/// Reads and validates a case file. Throws CaseError for a missing or
+/// unreadable file, malformed JSON and every schema violation.
+Case load_case(const std::string& path);
+
+} // namespace rsi

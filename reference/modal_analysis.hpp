@@ -1,0 +1,37 @@
+#pragma once
+// Undamped modal analysis K phi = omega^2 M phi of an assembled part.
+//
+// Dense path: LAPACKE dsygvd (symmetric-definite generalized problem, all
+// eigenpairs), used up to dense_limit dofs. Assumes K symmetric, M
+// symmetric positive definite; a failure of dsygvd (M not positive
+// definite, no convergence) is reported as ModalError, never ignored.
+// Eigenvectors are mass-normalised: Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
+
+#include <stdexcept>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace rsi {
+
+class ModalError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Modes {
+  Eigen::VectorXd omega_squared; ///< ascending [rad^2/s^2]
+  Eigen::MatrixXd shapes;        ///< columns mass-normalised
+  double omega_max = 0.0;        ///< largest omega of the whole model [rad/s]
+
+  int n_modes() const { return static_cast<int>(omega_squared.size()); }
+  double frequency_hz(int i) const;
+  /// Central-difference stability limit 2 / omega_max [s].
+  double critical_time_step() const { return 2.0 / omega_max; }
+};
+
+/// The `count` lowest modes (count <= n) and omega_max of the model.
+Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+                   int count);
+
+} // namespace rsi
