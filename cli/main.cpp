@@ -16,7 +16,7 @@
 
 int main(int argc, char** argv) {
   CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
 
   rsi::ModesOptions modes;
   CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one part -> DIR/modes.csv");
@@ -45,6 +45,10 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 2;
   }
 
+  if (app.get_subcommands().empty()) {
+    std::fprintf(stderr, "rsi: error: a subcommand is required: modes, export or calibrate (see rsi --help)\n");
+    return 2;
+  }
   try {
     if (*modes_cmd) return rsi::run_modes(modes);
     if (*export_cmd) return rsi::run_export(export_options);

@@ -1,0 +1,19 @@
+# Sourced by run-main.sh and run-tests.sh: installs the Debian packages rsi
+# needs when any is missing (apt-get; as root, or through sudo).
+rsi_packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev liblapacke-dev libgsl-dev
+  libgtest-dev libspectra-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-matplotlib
+  python3-scipy python3-numpy)
+
+rsi_install_dependencies() {
+  local missing=()
+  local p
+  for p in "${rsi_packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "installing missing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}"
+}
