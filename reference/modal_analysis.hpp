@@ -2,10 +2,13 @@
 // Undamped modal analysis K phi = omega^2 M phi of an assembled part.
 //
 // Dense path: LAPACKE dsygvd (symmetric-definite generalized problem, all
-// eigenpairs), used up to dense_limit dofs. Assumes K symmetric, M
-// symmetric positive definite; a failure of dsygvd (M not positive
-// definite, no convergence) is reported as ModalError, never ignored.
-// Eigenvectors are mass-normalised: Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
+// eigenpairs). Sparse path, for models too large for dense matrices:
+// Spectra's Lanczos solvers, shift-invert about sigma = 0 for the lowest
+// modes (needs K nonsingular: a supported part) and Cholesky mode for
+// omega_max. Assumes K symmetric, M symmetric positive definite. A failure
+// (M not positive definite, K singular, no convergence) is reported as
+// ModalError, never ignored. Eigenvectors are mass-normalised:
+// Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
 
 #include <stdexcept>
 
@@ -30,8 +33,19 @@ struct Modes {
   double critical_time_step() const { return 2.0 / omega_max; }
 };
 
-/// The `count` lowest modes (count <= n) and omega_max of the model.
+enum class ModalSolver {
+  automatic, ///< dense up to dense_limit dofs, sparse above
+  dense,
+  sparse
+};
+
+/// Largest model solved densely by ModalSolver::automatic (dense storage
+/// of K and M: 2 n^2 doubles, 64 MB at this size).
+constexpr int dense_limit = 2000;
+
+/// The `count` lowest modes (1 <= count <= n, count < n for the sparse
+/// path) and omega_max of the model.
 Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                   int count);
+                   int count, ModalSolver solver = ModalSolver::automatic);
 
 } // namespace rsi
