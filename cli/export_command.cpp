@@ -15,7 +15,8 @@ std::string dofs_csv(const DofMap& dofs) {
   std::ostringstream csv;
   csv << "index,node,kind,boundary\n";
   for (size_t i = 0; i < dofs.size(); ++i)
-    csv << i << "," << dofs[i].node << "," << dofs[i].kind << "," << (dofs[i].boundary ? 1 : 0) << "\n";
+    csv << i << "," << dofs[i].node << "," << dofs[i].kind << "," << (dofs[i].boundary ? 1 : 0)
+        << "\n";
   return csv.str();
 }
 

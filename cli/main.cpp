@@ -22,20 +22,22 @@ int main(int argc, char** argv) {
   CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one part -> DIR/modes.csv");
   modes_cmd->add_option("case", modes.case_path, "case file (JSON)")->required();
   modes_cmd->add_option("--part", modes.part, "bladed-disk or casing")->capture_default_str();
-  modes_cmd->add_option("--count", modes.count, "number of modes, 1..number of dofs")->capture_default_str();
+  modes_cmd->add_option("--count", modes.count, "number of modes, 1..number of dofs")
+      ->capture_default_str();
   modes_cmd->add_option("--out", modes.out, "output directory")->capture_default_str();
 
   rsi::ExportOptions export_options;
-  CLI::App* export_cmd =
-      app.add_subcommand("export", "K.mtx, M.mtx, dofs.csv of both parts -> DIR/{bladed-disk,casing}/");
+  CLI::App* export_cmd = app.add_subcommand(
+      "export", "K.mtx, M.mtx, dofs.csv of both parts -> DIR/{bladed-disk,casing}/");
   export_cmd->add_option("case", export_options.case_path, "case file (JSON)")->required();
   export_cmd->add_option("--out", export_options.out, "output directory")->capture_default_str();
 
   rsi::CalibrateOptions calibrate;
-  CLI::App* calibrate_cmd =
-      app.add_subcommand("calibrate", "Blade thickness that centres the first family of frequencies on a target");
+  CLI::App* calibrate_cmd = app.add_subcommand(
+      "calibrate", "Blade thickness that centres the first family of frequencies on a target");
   calibrate_cmd->add_option("case", calibrate.case_path, "case file (JSON)")->required();
-  calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz]")->capture_default_str();
+  calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz]")
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -46,7 +48,9 @@ int main(int argc, char** argv) {
   }
 
   if (app.get_subcommands().empty()) {
-    std::fprintf(stderr, "rsi: error: a subcommand is required: modes, export or calibrate (see rsi --help)\n");
+    std::fprintf(
+        stderr,
+        "rsi: error: a subcommand is required: modes, export or calibrate (see rsi --help)\n");
     return 2;
   }
   try {

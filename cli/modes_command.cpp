@@ -26,7 +26,8 @@ Part load_part(const Case& c, const std::string& name) {
     BladedDisk bd = assemble_bladed_disk(c);
     const int n = bd.n_sectors;
     const int block = bd.dofs_per_sector;
-    return {bd.stiffness, bd.mass, [n, block](const Eigen::VectorXd& x) { return nodal_diameter(x, n, block); }};
+    return {bd.stiffness, bd.mass,
+            [n, block](const Eigen::VectorXd& x) { return nodal_diameter(x, n, block); }};
   }
   if (name == "casing") {
     Casing casing = assemble_casing(c);
@@ -61,9 +62,10 @@ int run_modes(const ModesOptions& options) {
   write_text_file(path, csv.str());
 
   std::printf("%s: %s, %d dofs\n", c.source.c_str(), options.part.c_str(), n);
-  std::printf("omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = %.6e s"
-              " (case step %.3e s)\n",
-              modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step(), c.time.step);
+  std::printf(
+      "omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = %.6e s"
+      " (case step %.3e s)\n",
+      modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step(), c.time.step);
   std::printf("%6s %16s %6s\n", "index", "frequency_hz", "ND");
   const int shown = std::min(modes.n_modes(), 30);
   for (int i = 0; i < shown; ++i)

@@ -47,7 +47,8 @@ void write_text_file(const std::string& path, const std::string& content) {
   commit(temporary, path);
 }
 
-void write_symmetric_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix) {
+void write_symmetric_matrix_market(const std::string& path,
+                                   const Eigen::SparseMatrix<double>& matrix) {
   const std::string temporary = temporary_name(path);
   const Eigen::SparseMatrix<double> lower = matrix.triangularView<Eigen::Lower>();
   if (!Eigen::saveMarket(lower, temporary, Eigen::Symmetric)) {

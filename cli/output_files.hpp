@@ -22,6 +22,7 @@ void make_output_directory(const std::string& dir, const std::string& option);
 void write_text_file(const std::string& path, const std::string& content);
 
 /// Matrix Market coordinate real symmetric (lower triangle), 17 significant digits.
-void write_symmetric_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix);
+void write_symmetric_matrix_market(const std::string& path,
+                                   const Eigen::SparseMatrix<double>& matrix);
 
 } // namespace rsi

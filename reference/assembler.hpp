@@ -20,7 +20,8 @@ using DofCombination = std::vector<std::pair<int, double>>;
 
 class Assembler {
 public:
-  explicit Assembler(int n_dofs) : m_n(n_dofs) {}
+  explicit Assembler(int n_dofs)
+      : m_n(n_dofs) {}
 
   /// Adds L^T ke L and L^T me L, row a of L given by map[a].
   void add(const Eigen::Ref<const Eigen::MatrixXd>& ke, const Eigen::Ref<const Eigen::MatrixXd>& me,

@@ -15,7 +15,8 @@ struct BeamProperties {
 /// A = width * thickness, I = width * thickness^3 / 12.
 inline BeamProperties beam_properties(const Material& material, const Section& section) {
   const double area = section.width * section.thickness;
-  const double inertia = section.width * section.thickness * section.thickness * section.thickness / 12.0;
+  const double inertia =
+      section.width * section.thickness * section.thickness * section.thickness / 12.0;
   return {material.young_modulus * area, material.young_modulus * inertia, material.density * area};
 }
 

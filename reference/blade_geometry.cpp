@@ -59,7 +59,8 @@ BladeGeometry blade_geometry(const BladedDiskSpec& spec) {
   for (int i = 0; i < spec.n_blade_elements; ++i) {
     const double angle = -i * spec.kink_angle;
     g.element_angles.push_back(angle);
-    g.nodes.push_back(g.nodes.back() + g.element_length * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
+    g.nodes.push_back(g.nodes.back() +
+                      g.element_length * Eigen::Vector2d(std::cos(angle), std::sin(angle)));
   }
   g.tip_angle = std::atan2(g.nodes.back().y(), g.nodes.back().x());
   return g;

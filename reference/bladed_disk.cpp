@@ -11,10 +11,14 @@ namespace {
 
 using NodeDofs = std::vector<DofCombination>;
 
-DofCombination single(int dof) { return {{dof, 1.0}}; }
+DofCombination single(int dof) {
+  return {{dof, 1.0}};
+}
 
 /// Frame view (ux, uy, theta) of a node whose dofs are plain frame dofs.
-NodeDofs frame_node(int first) { return {single(first), single(first + 1), single(first + 2)}; }
+NodeDofs frame_node(int first) {
+  return {single(first), single(first + 1), single(first + 2)};
+}
 
 /// Frame view of the rim node from its ring dofs (u, u_s, v, v_s) at `first`:
 /// ux = u, uy = v, theta = v/R - u_s (SPEC §2 ring kinematics).
@@ -29,7 +33,9 @@ NodeDofs tip_frame_view(int first, double angle) {
   return {{{first, c}, {first + 1, -s}}, {{first, s}, {first + 1, c}}, single(first + 2)};
 }
 
-NodeDofs clamped_node() { return NodeDofs(3); }
+NodeDofs clamped_node() {
+  return NodeDofs(3);
+}
 
 NodeDofs ring_node(int first) {
   return {single(first), single(first + 1), single(first + 2), single(first + 3)};
@@ -57,14 +63,17 @@ BladedDisk assemble_bladed_disk(const Case& c, HubSupport hub) {
   const int hub_local = 4 + 3 * n_be;
   for (int k = 0; k < bd.n_sectors; ++k) {
     const int node0 = k * bd.nodes_per_sector;
-    for (const char* kind : {"u", "u_s", "v", "v_s"}) bd.dofs.push_back({node0 + 1, kind, false});
+    for (const char* kind : {"u", "u_s", "v", "v_s"})
+      bd.dofs.push_back({node0 + 1, kind, false});
     for (int i = 1; i < n_be; ++i)
-      for (const char* kind : {"ux", "uy", "theta"}) bd.dofs.push_back({node0 + 1 + i, kind, false});
+      for (const char* kind : {"ux", "uy", "theta"})
+        bd.dofs.push_back({node0 + 1 + i, kind, false});
     bd.dofs.push_back({node0 + 1 + n_be, "u", true});
     bd.dofs.push_back({node0 + 1 + n_be, "v", true});
     bd.dofs.push_back({node0 + 1 + n_be, "theta", false});
     if (free_hub)
-      for (const char* kind : {"ux", "uy", "theta"}) bd.dofs.push_back({node0, kind, false});
+      for (const char* kind : {"ux", "uy", "theta"})
+        bd.dofs.push_back({node0, kind, false});
     const int first = k * bd.dofs_per_sector;
     bd.tip_radial.push_back(first + tip_local);
     bd.tip_tangential.push_back(first + tip_local + 1);

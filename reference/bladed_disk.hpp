@@ -30,10 +30,10 @@ struct BladedDisk {
   BladeGeometry geometry;
   int n_sectors = 0;
   int dofs_per_sector = 0;
-  int nodes_per_sector = 0;         ///< hub, rim, blade nodes: node id = k * this + local
-  std::vector<int> tip_radial;      ///< global index of tip u of blade k
-  std::vector<int> tip_tangential;  ///< global index of tip v of blade k
-  std::vector<int> boundary;        ///< (u_0, v_0, u_1, v_1, ...): the contact dofs
+  int nodes_per_sector = 0;        ///< hub, rim, blade nodes: node id = k * this + local
+  std::vector<int> tip_radial;     ///< global index of tip u of blade k
+  std::vector<int> tip_tangential; ///< global index of tip v of blade k
+  std::vector<int> boundary;       ///< (u_0, v_0, u_1, v_1, ...): the contact dofs
 
   int n_dofs() const { return static_cast<int>(dofs.size()); }
 };

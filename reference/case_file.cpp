@@ -35,14 +35,18 @@ struct Range {
   }
 };
 
-Range positive(const std::string& unit) { return {0.0, inf, true, true, unit}; }
+Range positive(const std::string& unit) {
+  return {0.0, inf, true, true, unit};
+}
 
 /// One JSON object of the case file, read key by key; `finish()` rejects
 /// the keys that were never asked for (unknown keys).
 class ObjectReader {
 public:
   ObjectReader(const json& object, std::string path, const std::string& source)
-      : m_object(object), m_path(std::move(path)), m_source(source) {
+      : m_object(object)
+      , m_path(std::move(path))
+      , m_source(source) {
     if (!m_object.is_object())
       fail(m_path.empty() ? "(top level)" : m_path, "must be a JSON object");
   }
@@ -59,8 +63,8 @@ public:
 
   int integer(const std::string& key, long low, long high) {
     const json& value = get(key);
-    const std::string allowed = "an integer in [" + std::to_string(low) + ", " +
-                                std::to_string(high) + "]";
+    const std::string allowed =
+        "an integer in [" + std::to_string(low) + ", " + std::to_string(high) + "]";
     if (!value.is_number_integer()) fail(full(key), "must be " + allowed + ", got " + value.dump());
     const long x = value.get<long>();
     if (x < low || x > high) fail(full(key), "must be " + allowed + ", got " + value.dump());
@@ -74,7 +78,9 @@ public:
       fail(full(key), "must be a string (a note), got " + m_object.at(key).dump());
   }
 
-  ObjectReader object(const std::string& key) { return ObjectReader(get(key), full(key), m_source); }
+  ObjectReader object(const std::string& key) {
+    return ObjectReader(get(key), full(key), m_source);
+  }
 
   Section section(const std::string& key) {
     ObjectReader s = object(key);
@@ -95,7 +101,9 @@ public:
     throw CaseError(m_source + ": key '" + key + "': " + what);
   }
 
-  std::string full(const std::string& key) const { return m_path.empty() ? key : m_path + "." + key; }
+  std::string full(const std::string& key) const {
+    return m_path.empty() ? key : m_path + "." + key;
+  }
 
 private:
   const json& get(const std::string& key) {
@@ -127,15 +135,17 @@ BladedDiskSpec read_bladed_disk(ObjectReader r) {
 
 CasingSpec read_casing(ObjectReader r, double tip_radius) {
   CasingSpec c;
-  c.radius = r.number("radius", {tip_radius, inf, true, true,
-                                 "m (above bladed_disk.tip_radius: the clearance must be positive)"});
+  c.radius =
+      r.number("radius", {tip_radius, inf, true, true,
+                          "m (above bladed_disk.tip_radius: the clearance must be positive)"});
   c.n_elements = r.integer("n_elements", 3, 100000);
   c.section = r.section("section");
   const double clamp_deg = r.number("clamp_angle_deg", {0.0, 360.0, false, true, "degrees"});
   const double pitch_deg = 360.0 / c.n_elements;
   if (std::abs(clamp_deg / pitch_deg - std::round(clamp_deg / pitch_deg)) > 1e-9)
-    r.fail(r.full("clamp_angle_deg"), "must be the angle of a casing node, a multiple of 360/n_elements = " +
-                                          std::to_string(pitch_deg) + " degrees");
+    r.fail(r.full("clamp_angle_deg"),
+           "must be the angle of a casing node, a multiple of 360/n_elements = " +
+               std::to_string(pitch_deg) + " degrees");
   c.clamp_angle = clamp_deg * deg;
   r.finish();
   return c;
@@ -172,7 +182,8 @@ Case parse_case(const json& document, const std::string& source) {
 
   ObjectReader time = top.object("time");
   c.time.step = time.number("step", positive("s"));
-  c.time.duration = time.number("duration", {c.time.step, inf, false, true, "s (at least one step)"});
+  c.time.duration =
+      time.number("duration", {c.time.step, inf, false, true, "s (at least one step)"});
   c.time.output_every = time.integer("output_every", 1, 100000000);
   time.finish();
 

@@ -8,8 +8,8 @@
 namespace rsi {
 namespace {
 
-Casing assemble_ring(const Material& material, const Section& section, double radius, int n_elements,
-                     int clamped_node) {
+Casing assemble_ring(const Material& material, const Section& section, double radius,
+                     int n_elements, int clamped_node) {
   Casing casing;
   casing.radius = radius;
   casing.n_elements = n_elements;
@@ -20,7 +20,8 @@ Casing assemble_ring(const Material& material, const Section& section, double ra
       continue;
     }
     casing.node_first_dof.push_back(casing.n_dofs());
-    for (const char* kind : {"u", "u_s", "v", "v_s"}) casing.dofs.push_back({j, kind, false});
+    for (const char* kind : {"u", "u_s", "v", "v_s"})
+      casing.dofs.push_back({j, kind, false});
   }
   const BeamProperties p = beam_properties(material, section);
   const double arc = 2.0 * M_PI * radius / n_elements;
@@ -44,19 +45,22 @@ Casing assemble_ring(const Material& material, const Section& section, double ra
 } // namespace
 
 Casing assemble_casing(const Case& c) {
-  const int clamped = static_cast<int>(std::lround(c.casing.clamp_angle * c.casing.n_elements / (2.0 * M_PI))) %
-                      c.casing.n_elements;
+  const int clamped =
+      static_cast<int>(std::lround(c.casing.clamp_angle * c.casing.n_elements / (2.0 * M_PI))) %
+      c.casing.n_elements;
   return assemble_ring(c.material, c.casing.section, c.casing.radius, c.casing.n_elements, clamped);
 }
 
 Eigen::VectorXd on_all_nodes(const Casing& casing, const Eigen::Ref<const Eigen::VectorXd>& x) {
   Eigen::VectorXd all = Eigen::VectorXd::Zero(4 * casing.n_elements);
   for (int j = 0; j < casing.n_elements; ++j)
-    if (casing.node_first_dof[j] >= 0) all.segment<4>(4 * j) = x.segment<4>(casing.node_first_dof[j]);
+    if (casing.node_first_dof[j] >= 0)
+      all.segment<4>(4 * j) = x.segment<4>(casing.node_first_dof[j]);
   return all;
 }
 
-Casing assemble_free_ring(const Material& material, const Section& section, double radius, int n_elements) {
+Casing assemble_free_ring(const Material& material, const Section& section, double radius,
+                          int n_elements) {
   return assemble_ring(material, section, radius, n_elements, -1);
 }
 

@@ -34,6 +34,7 @@ Eigen::VectorXd on_all_nodes(const Casing& casing, const Eigen::Ref<const Eigen:
 
 /// A free (unclamped) ring of n elements: the same element, no supports.
 /// Used by the verification suites against the exact ring solution.
-Casing assemble_free_ring(const Material& material, const Section& section, double radius, int n_elements);
+Casing assemble_free_ring(const Material& material, const Section& section, double radius,
+                          int n_elements);
 
 } // namespace rsi

@@ -16,16 +16,18 @@
 namespace rsi {
 namespace {
 
-Modes dense_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                  int count) {
+Modes dense_modes(const Eigen::SparseMatrix<double>& stiffness,
+                  const Eigen::SparseMatrix<double>& mass, int count) {
   const int n = static_cast<int>(stiffness.rows());
   Eigen::MatrixXd a = Eigen::MatrixXd(stiffness);
   Eigen::MatrixXd b = Eigen::MatrixXd(mass);
   Eigen::VectorXd w(n);
-  const lapack_int info = LAPACKE_dsygvd(LAPACK_COL_MAJOR, 1, 'V', 'L', n, a.data(), n, b.data(), n, w.data());
+  const lapack_int info =
+      LAPACKE_dsygvd(LAPACK_COL_MAJOR, 1, 'V', 'L', n, a.data(), n, b.data(), n, w.data());
   if (info > n)
-    throw ModalError("modal analysis: the mass matrix is not positive definite (LAPACKE_dsygvd info " +
-                     std::to_string(info) + ", leading minor " + std::to_string(info - n) + ")");
+    throw ModalError(
+        "modal analysis: the mass matrix is not positive definite (LAPACKE_dsygvd info " +
+        std::to_string(info) + ", leading minor " + std::to_string(info - n) + ")");
   if (info != 0)
     throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")");
   Modes modes;
@@ -41,7 +43,8 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
   Spectra::SparseSymMatProd<double> op(stiffness);
   Spectra::SparseCholesky<double> bop(mass);
   if (bop.info() != Spectra::CompInfo::Successful)
-    throw ModalError("modal analysis: the mass matrix is not positive definite (sparse Cholesky failed)");
+    throw ModalError(
+        "modal analysis: the mass matrix is not positive definite (sparse Cholesky failed)");
   const int n = static_cast<int>(stiffness.rows());
   Spectra::SymGEigsSolver<Spectra::SparseSymMatProd<double>, Spectra::SparseCholesky<double>,
                           Spectra::GEigsMode::Cholesky>
@@ -53,22 +56,23 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
   return solver.eigenvalues()(0);
 }
 
-Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                   int count) {
+Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
+                   const Eigen::SparseMatrix<double>& mass, int count) {
   const int n = static_cast<int>(stiffness.rows());
   using ShiftInvert = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
   using MassProduct = Spectra::SparseSymMatProd<double>;
   ShiftInvert op(stiffness, mass);
   MassProduct bop(mass);
   const int ncv = std::min(n, std::max(2 * count + 1, count + 20));
-  Spectra::SymGEigsShiftSolver<ShiftInvert, MassProduct, Spectra::GEigsMode::ShiftInvert> solver(op, bop, count,
-                                                                                                ncv, 0.0);
+  Spectra::SymGEigsShiftSolver<ShiftInvert, MassProduct, Spectra::GEigsMode::ShiftInvert> solver(
+      op, bop, count, ncv, 0.0);
   solver.init();
   try {
     solver.compute(Spectra::SortRule::LargestMagn, 10000, 1e-12);
   } catch (const std::invalid_argument& e) {
-    throw ModalError(std::string("modal analysis: the stiffness matrix is singular (shift-invert about 0): ") +
-                     e.what());
+    throw ModalError(
+        std::string("modal analysis: the stiffness matrix is singular (shift-invert about 0): ") +
+        e.what());
   }
   if (solver.info() != Spectra::CompInfo::Successful)
     throw ModalError("modal analysis: shift-invert Lanczos did not converge for the lowest " +
@@ -78,7 +82,8 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::Sp
   const Eigen::VectorXd values = solver.eigenvalues();
   const Eigen::MatrixXd vectors = solver.eigenvectors();
   std::vector<int> order(count);
-  for (int i = 0; i < count; ++i) order[i] = i;
+  for (int i = 0; i < count; ++i)
+    order[i] = i;
   std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) < values(b); });
   modes.omega_squared.resize(count);
   modes.shapes.resize(n, count);
@@ -91,8 +96,10 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::Sp
   // A singular K (a mechanism, a missing support) leaves eigenvalues at the
   // round-off level n eps lambda_max, where shift-invert about 0 is meaningless.
   if (modes.omega_squared(0) < n * std::numeric_limits<double>::epsilon() * largest)
-    throw ModalError("modal analysis: the stiffness matrix is singular to working precision (lowest eigenvalue " +
-                     std::to_string(modes.omega_squared(0)) + " rad^2/s^2 against " + std::to_string(largest) +
+    throw ModalError("modal analysis: the stiffness matrix is singular to working precision "
+                     "(lowest eigenvalue " +
+                     std::to_string(modes.omega_squared(0)) + " rad^2/s^2 against " +
+                     std::to_string(largest) +
                      " for the largest): the part is not supported against a rigid motion");
   return modes;
 }
@@ -104,15 +111,17 @@ double Modes::frequency_hz(int i) const {
   return std::copysign(std::sqrt(std::abs(w2)), w2) / (2.0 * M_PI);
 }
 
-Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                   int count, ModalSolver solver) {
+Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
+                   const Eigen::SparseMatrix<double>& mass, int count, ModalSolver solver) {
   const int n = static_cast<int>(stiffness.rows());
   if (count < 1 || count > n)
-    throw std::invalid_argument("lowest_modes: count must be in [1, " + std::to_string(n) + "], got " +
-                                std::to_string(count));
-  const bool dense = solver == ModalSolver::dense || (solver == ModalSolver::automatic && n <= dense_limit);
+    throw std::invalid_argument("lowest_modes: count must be in [1, " + std::to_string(n) +
+                                "], got " + std::to_string(count));
+  const bool dense =
+      solver == ModalSolver::dense || (solver == ModalSolver::automatic && n <= dense_limit);
   if (!dense && count >= n)
-    throw std::invalid_argument("lowest_modes: the sparse solver needs count < " + std::to_string(n));
+    throw std::invalid_argument("lowest_modes: the sparse solver needs count < " +
+                                std::to_string(n));
   return dense ? dense_modes(stiffness, mass, count) : sparse_modes(stiffness, mass, count);
 }
 

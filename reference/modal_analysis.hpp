@@ -45,7 +45,8 @@ constexpr int dense_limit = 2000;
 
 /// The `count` lowest modes (1 <= count <= n, count < n for the sparse
 /// path) and omega_max of the model.
-Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-                   int count, ModalSolver solver = ModalSolver::automatic);
+Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
+                   const Eigen::SparseMatrix<double>& mass, int count,
+                   ModalSolver solver = ModalSolver::automatic);
 
 } // namespace rsi

@@ -9,7 +9,8 @@ namespace {
 
 /// Energy in each harmonic n = 0..N/2 (n and N - n combined); by Parseval
 /// the entries sum to N times the sum of squares of the mode.
-Eigen::VectorXd harmonic_energy(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks, int block_size) {
+Eigen::VectorXd harmonic_energy(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks,
+                                int block_size) {
   assert(mode.size() == static_cast<Eigen::Index>(n_blocks) * block_size);
   const int half = n_blocks / 2;
   Eigen::VectorXd energy = Eigen::VectorXd::Zero(half + 1);
@@ -32,7 +33,8 @@ int nodal_diameter(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks, 
   return static_cast<int>(n);
 }
 
-double nodal_diameter_purity(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks, int block_size) {
+double nodal_diameter_purity(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks,
+                             int block_size) {
   const Eigen::VectorXd energy = harmonic_energy(mode, n_blocks, block_size);
   return energy.maxCoeff() / energy.sum();
 }

@@ -16,6 +16,7 @@ int nodal_diameter(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks, 
 
 /// Share of the mode's sum of squares that lies in its dominant harmonic
 /// (1 for a mode of a perfectly cyclic structure).
-double nodal_diameter_purity(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks, int block_size);
+double nodal_diameter_purity(const Eigen::Ref<const Eigen::VectorXd>& mode, int n_blocks,
+                             int block_size);
 
 } // namespace rsi

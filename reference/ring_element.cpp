@@ -10,8 +10,8 @@ namespace {
 using Row8 = Eigen::Matrix<double, 1, 8>;
 
 Eigen::Vector4d hermite_first(double xi, double l) {
-  return Eigen::Vector4d(-6 * xi + 6 * xi * xi, l * (1 - 4 * xi + 3 * xi * xi), 6 * xi - 6 * xi * xi,
-                         l * (-2 * xi + 3 * xi * xi)) /
+  return Eigen::Vector4d(-6 * xi + 6 * xi * xi, l * (1 - 4 * xi + 3 * xi * xi),
+                         6 * xi - 6 * xi * xi, l * (-2 * xi + 3 * xi * xi)) /
          l;
 }
 
@@ -31,8 +31,8 @@ Row8 spread(const Eigen::Vector4d& n, int offset) {
 }
 
 struct GaussTable {
-  std::unique_ptr<gsl_integration_glfixed_table, decltype(&gsl_integration_glfixed_table_free)> table{
-      gsl_integration_glfixed_table_alloc(4), &gsl_integration_glfixed_table_free};
+  std::unique_ptr<gsl_integration_glfixed_table, decltype(&gsl_integration_glfixed_table_free)>
+      table{gsl_integration_glfixed_table_alloc(4), &gsl_integration_glfixed_table_free};
 };
 
 /// Sum over the Gauss points of w * f(xi) on [0, 1].

@@ -29,7 +29,9 @@ protected:
     delete bd;
     delete c;
   }
-  static int diameter(int i) { return nodal_diameter(modes->shapes.col(i), bd->n_sectors, bd->dofs_per_sector); }
+  static int diameter(int i) {
+    return nodal_diameter(modes->shapes.col(i), bd->n_sectors, bd->dofs_per_sector);
+  }
 
   static Case* c;
   static BladedDisk* bd;
@@ -50,10 +52,12 @@ TEST_F(BladedDiskModes, DofCountAndBoundary) {
 
 TEST_F(BladedDiskModes, FirstFamilyCentredOn44Hz) {
   double sum = 0.0;
-  for (int i = 0; i < bd->n_sectors; ++i) sum += modes->frequency_hz(i);
+  for (int i = 0; i < bd->n_sectors; ++i)
+    sum += modes->frequency_hz(i);
   const double mean = sum / bd->n_sectors;
-  std::printf("first family: %.6f .. %.6f Hz, mean %.6f Hz; next mode %.3f Hz\n", modes->frequency_hz(0),
-              modes->frequency_hz(bd->n_sectors - 1), mean, modes->frequency_hz(bd->n_sectors));
+  std::printf("first family: %.6f .. %.6f Hz, mean %.6f Hz; next mode %.3f Hz\n",
+              modes->frequency_hz(0), modes->frequency_hz(bd->n_sectors - 1), mean,
+              modes->frequency_hz(bd->n_sectors));
   // SPEC §2: the first family centres on 44 Hz +- 0.5 Hz (calibrated blade thickness).
   EXPECT_NEAR(mean, 44.0, 0.5);
   // The same number through the calibration module (an independent path to it).
@@ -66,11 +70,13 @@ TEST_F(BladedDiskModes, FamiliesOfNBladesWithEveryNodalDiameter) {
   const int n = bd->n_sectors;
   for (int family = 0; family < 3; ++family) {
     std::map<int, int> count;
-    for (int i = family * n; i < (family + 1) * n; ++i) ++count[diameter(i)];
+    for (int i = family * n; i < (family + 1) * n; ++i)
+      ++count[diameter(i)];
     std::printf("family %d: %.4f .. %.4f Hz\n", family, modes->frequency_hz(family * n),
                 modes->frequency_hz((family + 1) * n - 1));
     for (int d = 0; d <= n / 2; ++d)
-      EXPECT_EQ(count[d], (d == 0 || d == n / 2) ? 1 : 2) << "family " << family << ", nodal diameter " << d;
+      EXPECT_EQ(count[d], (d == 0 || d == n / 2) ? 1 : 2)
+          << "family " << family << ", nodal diameter " << d;
   }
 }
 
@@ -103,22 +109,25 @@ TEST_F(BladedDiskModes, DoubleFrequenciesForDiametersOneToTen) {
       EXPECT_EQ(nearest_d, d) << "mode " << i + 1;
     }
   }
-  std::printf("worst relative split of a double pair: %.3e; closest other frequency to a single: %.3e\n",
-              worst_pair, closest_single);
+  std::printf(
+      "worst relative split of a double pair: %.3e; closest other frequency to a single: %.3e\n",
+      worst_pair, closest_single);
 }
 
 TEST_F(BladedDiskModes, AgreesWithIndependentDenseSolver) {
   // Eigen's GeneralizedSelfAdjointEigenSolver (Cholesky + tridiagonal QR,
   // independent of LAPACK) on the same matrices.
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Eigen::MatrixXd(bd->stiffness),
-                                                                        Eigen::MatrixXd(bd->mass));
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+      Eigen::MatrixXd(bd->stiffness), Eigen::MatrixXd(bd->mass));
   ASSERT_EQ(eigen.info(), Eigen::Success);
   double worst = 0.0;
   for (int i = 0; i < modes->n_modes(); ++i)
-    worst = std::max(worst, std::abs(eigen.eigenvalues()(i) - modes->omega_squared(i)) / modes->omega_squared(i));
-  const double max_rel = std::abs(std::sqrt(eigen.eigenvalues().maxCoeff()) - modes->omega_max) / modes->omega_max;
-  std::printf("max relative difference of omega^2 (lowest %d): %.3e; of omega_max: %.3e\n", modes->n_modes(),
-              worst, max_rel);
+    worst = std::max(worst, std::abs(eigen.eigenvalues()(i) - modes->omega_squared(i)) /
+                                modes->omega_squared(i));
+  const double max_rel =
+      std::abs(std::sqrt(eigen.eigenvalues().maxCoeff()) - modes->omega_max) / modes->omega_max;
+  std::printf("max relative difference of omega^2 (lowest %d): %.3e; of omega_max: %.3e\n",
+              modes->n_modes(), worst, max_rel);
   // Both backward stable: |d lambda| <= c n eps lambda_max; lambda_max / lambda_min ~ 1e8,
   // n eps ~ 1.5e-13, so ~1e-5 in the worst case; the acceptance bound is 1e-6 in frequency,
   // i.e. 2e-6 in omega^2.

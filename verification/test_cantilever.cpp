@@ -9,7 +9,7 @@
 //
 // Expected rates. Bending: cubic Hermite (p = 3) for a fourth-order problem
 // (m = 2) with consistent mass: eigenvalue error O(h^{2(p+1-m)}) = O(h^4)
-// (Strang & Fix, An Analysis of the Finite Element Method, §6.3). Axial:
+// (Strang & Fix, An Analysis of the Finite Element Method, ch. 6). Axial:
 // linear elements (p = 1, m = 1): O(h^2). The FE space is conforming, so
 // every discrete eigenvalue lies above the exact one (min-max).
 //
@@ -50,15 +50,16 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 const Material steel{210e9, 7800};
-const Section slender{0.03, 0.002}; // width (out of plane) x thickness (in plane), L / thickness = 100
+// Width (out of plane) x thickness (in plane): L / thickness = 100.
+const Section slender{0.03, 0.002};
 constexpr double length = 0.2;
 const BeamProperties beam = beam_properties(steel, slender);
 const std::vector<int> meshes = {2, 4, 8, 16, 32, 64};
 constexpr int n_modes = 5;
 
-/// beta_k (= beta_k L, dimensionless), the k-th positive root (k = 1, 2, ...) of cos(beta) cosh(beta) = -1,
-/// written cos(beta) + 1 / cosh(beta) = 0 (same roots, bounded values),
-/// by GSL Brent on [(2k - 1) pi / 2 - 0.5, (2k - 1) pi / 2 + 0.5].
+/// beta_k (= beta_k L, dimensionless), the k-th positive root (k = 1, 2, ...) of cos(beta)
+/// cosh(beta) = -1, written cos(beta) + 1 / cosh(beta) = 0 (same roots, bounded values), by GSL
+/// Brent on [(2k - 1) pi / 2 - 0.5, (2k - 1) pi / 2 + 0.5].
 double cantilever_root(int k) {
   gsl_function f;
   f.function = [](double beta, void*) { return std::cos(beta) + 1.0 / std::cosh(beta); };
@@ -77,8 +78,8 @@ double cantilever_root(int k) {
   }
   gsl_set_error_handler(previous);
   if (status != GSL_SUCCESS)
-    throw std::runtime_error("cantilever_root: GSL Brent failed for k = " + std::to_string(k) + " (" +
-                             gsl_strerror(status) + ")");
+    throw std::runtime_error("cantilever_root: GSL Brent failed for k = " + std::to_string(k) +
+                             " (" + gsl_strerror(status) + ")");
   return gsl_root_fsolver_root(solver.get());
 }
 
@@ -88,7 +89,8 @@ double exact_bending_omega2(int k) {
 }
 
 double exact_axial_omega2(int k) {
-  const double omega = (2 * k - 1) * M_PI * std::sqrt(steel.young_modulus / steel.density) / (2 * length);
+  const double omega =
+      (2 * k - 1) * M_PI * std::sqrt(steel.young_modulus / steel.density) / (2 * length);
   return omega * omega;
 }
 
@@ -120,7 +122,8 @@ CantileverSpectrum cantilever_spectrum(int n) {
   s.omega_max2 = modes.omega_max * modes.omega_max;
   for (int i = 0; i < modes.n_modes(); ++i) {
     Eigen::VectorXd transverse = modes.shapes.col(i);
-    for (int j = 0; j < 3 * n; j += 3) transverse(j) = 0.0;
+    for (int j = 0; j < 3 * n; j += 3)
+      transverse(j) = 0.0;
     // Shapes are mass-normalised and M has no axial-transverse coupling, so
     // the transverse share and the axial share add up to 1.
     const double share = transverse.dot(m * transverse);
@@ -139,7 +142,8 @@ size_t first_resolved_mesh(double wavenumber) {
 
 std::vector<CantileverSpectrum> all_spectra() {
   std::vector<CantileverSpectrum> spectra;
-  for (int n : meshes) spectra.push_back(cantilever_spectrum(n));
+  for (int n : meshes)
+    spectra.push_back(cantilever_spectrum(n));
   return spectra;
 }
 
@@ -149,10 +153,11 @@ TEST(Cantilever, FrequencyEquationRoots) {
   for (int k = 1; k <= n_modes; ++k) {
     const double beta = cantilever_root(k);
     const double residual = std::cos(beta) * std::cosh(beta) + 1.0;
-    std::printf("beta_%d = %.15f (table %.9f), cos cosh + 1 = %.2e\n", k, beta, table[k - 1], residual);
+    std::printf("beta_%d = %.15f (table %.9f), cos cosh + 1 = %.2e\n", k, beta, table[k - 1],
+                residual);
     // The table is rounded to 9 significant digits: |difference| <= half a unit in the last digit.
     EXPECT_NEAR(beta, table[k - 1], 0.5e-8 * std::pow(10.0, std::floor(std::log10(beta))));
-    // |d(cos cosh)/d beta| ~ cosh(beta): a root to 4 eps relative leaves a residual <= ~8 eps beta cosh(beta).
+    // |d(cos cosh)/d beta| <= 2 cosh(beta): a root to 4 eps leaves <= 8 eps beta cosh(beta).
     EXPECT_LE(std::abs(residual), 8 * eps * beta * std::cosh(beta));
   }
 }
@@ -160,12 +165,12 @@ TEST(Cantilever, FrequencyEquationRoots) {
 TEST(Cantilever, ModesSplitIntoBendingAndAxial) {
   for (int n : meshes) {
     const CantileverSpectrum s = cantilever_spectrum(n);
-    std::printf("n = %2d: %zu bending, %zu axial modes, worst mixing %.2e\n", n, s.bending.size(), s.axial.size(),
-                s.worst_mixing);
+    std::printf("n = %2d: %zu bending, %zu axial modes, worst mixing %.2e\n", n, s.bending.size(),
+                s.axial.size(), s.worst_mixing);
     // Dimension count: 2 transverse dofs (u_y, theta) and 1 axial dof per free node.
     EXPECT_EQ(s.bending.size(), static_cast<size_t>(2 * n));
     EXPECT_EQ(s.axial.size(), static_cast<size_t>(n));
-    // At angle 0 cos = 1, sin = 0 exactly: K and M decouple exactly, mixing is round-off (~1e-15 seen).
+    // Angle 0: cos = 1, sin = 0 exactly, K and M decouple; mixing is round-off (1e-15 seen).
     EXPECT_LE(s.worst_mixing, 1e-9);
   }
 }
@@ -188,9 +193,10 @@ TEST(Cantilever, BendingFrequenciesConvergeAtFourthOrder) {
       const double floor = eps * s.omega_max2 / exact;
       const bool used = i >= first && i <= first + 2;
       const double beta_h = beta / meshes[i]; // beta is beta_k L, dimensionless
-      std::printf("  n = %2d: beta h = %.3f, f_h = %.6f Hz, e = %.4e, floor = %.1e, e / (beta h)^4 = %.4e%s\n",
-                  meshes[i], beta_h, std::sqrt(s.bending[k - 1]) / (2 * M_PI), e, floor, e / std::pow(beta_h, 4),
-                  used ? "  [used]" : "");
+      std::printf("  n = %2d: beta h = %.3f, f_h = %.6f Hz, e = %.4e, floor = %.1e, e / (beta h)^4 "
+                  "= %.4e%s\n",
+                  meshes[i], beta_h, std::sqrt(s.bending[k - 1]) / (2 * M_PI), e, floor,
+                  e / std::pow(beta_h, 4), used ? "  [used]" : "");
       if (!used) continue;
       // Round-off guard (see the file header): the error must stand 100 x above the dsygvd floor.
       EXPECT_GE(e, 100 * floor) << "mode " << k << ", n = " << meshes[i];
@@ -199,9 +205,9 @@ TEST(Cantilever, BendingFrequenciesConvergeAtFourthOrder) {
     ASSERT_EQ(errors.size(), 3u);
     for (size_t j = 0; j + 1 < errors.size(); ++j) {
       const double rate = std::log2(errors[j] / errors[j + 1]);
-      std::printf("  observed rate n = %d -> %d: %.3f\n", meshes[first + j], meshes[first + j + 1], rate);
-      // Strang-Fix O(h^4); 0.25 = what an O((beta h)^2)-relative next term with coefficient <= 0.2 in
-      // size (0.11 measured, mode 1) can move log2 at beta h <= 1, plus 0.03 of round-off.
+      std::printf("  observed rate n = %d -> %d: %.3f\n", meshes[first + j], meshes[first + j + 1],
+                  rate);
+      // Strang-Fix h^4; 0.25: O((beta h)^2) next term, |coef| <= 0.2 (0.11 seen), at beta h <= 1.
       EXPECT_GE(rate, 4.0 - 0.25) << "mode " << k;
       EXPECT_LE(rate, 4.0 + 0.25) << "mode " << k;
     }
@@ -236,9 +242,10 @@ TEST(Cantilever, AxialFrequenciesMatchDiscreteBarAndConvergeAtSecondOrder) {
       const double floor = eps * s.omega_max2 / exact;
       const double e = s.axial[k - 1] / exact - 1.0;
       const bool used = i >= first && i <= first + 2;
-      std::printf("  n = %2d: kh = %.3f, e = %.4e, |FE / discrete formula - 1| = %.2e, floor = %.1e%s\n", meshes[i],
-                  wavenumber * h, e, deviation, floor, used ? "  [used]" : "");
-      // Closed-form discrete eigenvalue: dsygvd error eps omega_max^2 per eigenvalue, x4 for p(n) growth.
+      std::printf(
+          "  n = %2d: kh = %.3f, e = %.4e, |FE / discrete formula - 1| = %.2e, floor = %.1e%s\n",
+          meshes[i], wavenumber * h, e, deviation, floor, used ? "  [used]" : "");
+      // Closed-form discrete eigenvalue: dsygvd error eps omega_max^2, x4 for LAPACK's p(n).
       EXPECT_LE(deviation, 4 * floor) << "mode " << k << ", n = " << meshes[i];
       if (!used) continue;
       // Round-off guard: the error must stand 100 x above the dsygvd floor.
@@ -248,9 +255,10 @@ TEST(Cantilever, AxialFrequenciesMatchDiscreteBarAndConvergeAtSecondOrder) {
     ASSERT_EQ(errors.size(), 3u);
     for (size_t j = 0; j + 1 < errors.size(); ++j) {
       const double rate = std::log2(errors[j] / errors[j + 1]);
-      std::printf("  observed rate n = %d -> %d: %.3f\n", meshes[first + j], meshes[first + j + 1], rate);
-      // e = (kh)^2/12 (1 + (kh)^2/30 + ...) (series of the formula above): at kh <= 1 the rate is
-      // within log2((1 + 1/30) / (1 + 1/120)) = 0.036 of 2; margin 0.05 adds round-off.
+      std::printf("  observed rate n = %d -> %d: %.3f\n", meshes[first + j], meshes[first + j + 1],
+                  rate);
+      // Formula above: e = (kh)^2/12 (1 + (kh)^2/30 + ..), kh <= 1: |rate - 2| <= 0.036 (+
+      // round-off).
       EXPECT_NEAR(rate, 2.0, 0.05) << "mode " << k;
     }
     const double bound = errors[0] * std::pow(4.0, -(2.0 - 0.05));

@@ -28,7 +28,8 @@ void expect_rejected(const json& document, const std::vector<std::string>& fragm
   } catch (const CaseError& e) {
     const std::string message = e.what();
     std::printf("rejected: %s\n", message.c_str());
-    for (const std::string& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << message;
+    for (const std::string& f : fragments)
+      EXPECT_NE(message.find(f), std::string::npos) << message;
   }
 }
 

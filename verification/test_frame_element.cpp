@@ -38,10 +38,12 @@ TEST(FrameElement, SymmetricPositiveSemiDefiniteRankThree) {
     EXPECT_LE((m - m.transpose()).cwiseAbs().maxCoeff(), 16 * eps * m.cwiseAbs().maxCoeff());
     const Eigen::VectorXd lk = Eigen::SelfAdjointEigenSolver<Matrix6d>(k).eigenvalues();
     const Eigen::VectorXd lm = Eigen::SelfAdjointEigenSolver<Matrix6d>(m).eigenvalues();
-    std::printf("angle %.2f: stiffness eigenvalues %.3e %.3e %.3e | %.3e %.3e %.3e; min mass eigenvalue %.3e\n",
+    std::printf("angle %.2f: stiffness eigenvalues %.3e %.3e %.3e | %.3e %.3e %.3e; min mass "
+                "eigenvalue %.3e\n",
                 angle, lk(0), lk(1), lk(2), lk(3), lk(4), lk(5), lm(0));
     // Three rigid modes: three eigenvalues at round-off level (eps * ||K|| times a small count).
-    for (int i = 0; i < 3; ++i) EXPECT_LE(std::abs(lk(i)), 64 * eps * lk(5));
+    for (int i = 0; i < 3; ++i)
+      EXPECT_LE(std::abs(lk(i)), 64 * eps * lk(5));
     // Rank exactly 3: the smallest deformation eigenvalue stands clear of
     // that round-off level by many orders of magnitude (here ~1e7).
     EXPECT_GT(lk(3), 1e4 * 64 * eps * lk(5));
@@ -55,7 +57,8 @@ TEST(FrameElement, RigidBodyModesStoreNoEnergyExactly) {
     const double length = 0.05;
     const Matrix6d k = frame_stiffness(steel_blade, length, angle);
     const Eigen::Matrix<double, 6, 3> r = rigid_modes(length, angle);
-    const double residual = (k * r).cwiseAbs().maxCoeff() / (k.cwiseAbs().maxCoeff() * r.cwiseAbs().maxCoeff());
+    const double residual =
+        (k * r).cwiseAbs().maxCoeff() / (k.cwiseAbs().maxCoeff() * r.cwiseAbs().maxCoeff());
     std::printf("angle %.2f: max |K r| / (max|K| max|r|) = %.3e\n", angle, residual);
     // K r = 0 exactly in exact arithmetic (linear axial + cubic bending hold
     // rigid motions): round-off only, a few eps per entry.

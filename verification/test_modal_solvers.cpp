@@ -12,10 +12,12 @@
 namespace rsi {
 namespace {
 
-Case default_case() { return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json"); }
+Case default_case() {
+  return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
+}
 
-void compare(const std::string& name, const Eigen::SparseMatrix<double>& k, const Eigen::SparseMatrix<double>& m,
-             int count) {
+void compare(const std::string& name, const Eigen::SparseMatrix<double>& k,
+             const Eigen::SparseMatrix<double>& m, int count) {
   const Modes dense = lowest_modes(k, m, count, ModalSolver::dense);
   const Modes sparse = lowest_modes(k, m, count, ModalSolver::sparse);
   const int n = static_cast<int>(k.rows());
@@ -28,7 +30,8 @@ void compare(const std::string& name, const Eigen::SparseMatrix<double>& k, cons
   for (int i = 0; i < count; ++i) {
     value_error = std::max(value_error, std::abs(sparse.omega_squared(i) - dense.omega_squared(i)));
     const Eigen::VectorXd phi = sparse.shapes.col(i);
-    residual = std::max(residual, (k * phi - sparse.omega_squared(i) * (m * phi)).norm() / (k_norm * phi.norm()));
+    residual = std::max(residual, (k * phi - sparse.omega_squared(i) * (m * phi)).norm() /
+                                      (k_norm * phi.norm()));
   }
   const double lambda_max = dense.omega_max * dense.omega_max;
   const double scaled_value_error = value_error / (n * eps * lambda_max);
@@ -36,9 +39,10 @@ void compare(const std::string& name, const Eigen::SparseMatrix<double>& k, cons
   // Mass-normalised and M-orthogonal, whatever the solver.
   const Eigen::MatrixXd gram = sparse.shapes.transpose() * m * sparse.shapes;
   const double gram_error = (gram - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff();
-  std::printf("%s, lowest %d: max|d omega^2| = %.3e = %.3f n eps lambda_max; omega_max rel. diff. %.3e; "
-              "max|Phi^T M Phi - I| %.3e; max |K phi - w2 M phi|/(|K| |phi|) %.3e\n",
-              name.c_str(), count, value_error, scaled_value_error, max_error, gram_error, residual);
+  std::printf(
+      "%s, lowest %d: max|d omega^2| = %.3e = %.3f n eps lambda_max; omega_max rel. diff. %.3e; "
+      "max|Phi^T M Phi - I| %.3e; max |K phi - w2 M phi|/(|K| |phi|) %.3e\n",
+      name.c_str(), count, value_error, scaled_value_error, max_error, gram_error, residual);
   // dsygvd is backward stable: |d lambda| <= p(n) eps lambda_max (Weyl), p(n) = n;
   // Lanczos converged to 1e-12 adds much less.
   EXPECT_LE(scaled_value_error, 1.0);

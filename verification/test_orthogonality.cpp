@@ -12,7 +12,9 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-Case default_case() { return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json"); }
+Case default_case() {
+  return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
+}
 
 /// Infinity norm: an upper bound of the 2-norm of a symmetric matrix.
 double norm_inf(const Eigen::SparseMatrix<double>& a) {
@@ -24,17 +26,20 @@ void check_orthogonality(const std::string& name, const Eigen::SparseMatrix<doub
   const Modes modes = lowest_modes(k, m, static_cast<int>(k.rows()));
   const Eigen::MatrixXd phi = modes.shapes.leftCols(count);
   const int n = static_cast<int>(k.rows());
-  const Eigen::MatrixXd mass_error = phi.transpose() * m * phi - Eigen::MatrixXd::Identity(count, count);
+  const Eigen::MatrixXd mass_error =
+      phi.transpose() * m * phi - Eigen::MatrixXd::Identity(count, count);
   const Eigen::MatrixXd stiffness_error =
       phi.transpose() * k * phi - Eigen::MatrixXd(modes.omega_squared.head(count).asDiagonal());
   const double phi_norm2 = phi.colwise().squaredNorm().maxCoeff();
   // Backward stability of dsygvd plus the products: errors <= n eps ||A|| max|phi|^2.
   const double mass_bound = n * eps * norm_inf(m) * phi_norm2;
   const double stiffness_bound = n * eps * norm_inf(k) * phi_norm2;
-  std::printf("%s: max|Phi^T M Phi - I| = %.3e (bound %.3e), max|Phi^T K Phi - Omega^2| = %.3e (bound %.3e, "
+  std::printf("%s: max|Phi^T M Phi - I| = %.3e (bound %.3e), max|Phi^T K Phi - Omega^2| = %.3e "
+              "(bound %.3e, "
               "omega^2_max of the set %.3e)\n",
-              name.c_str(), mass_error.cwiseAbs().maxCoeff(), mass_bound, stiffness_error.cwiseAbs().maxCoeff(),
-              stiffness_bound, modes.omega_squared(count - 1));
+              name.c_str(), mass_error.cwiseAbs().maxCoeff(), mass_bound,
+              stiffness_error.cwiseAbs().maxCoeff(), stiffness_bound,
+              modes.omega_squared(count - 1));
   EXPECT_LE(mass_error.cwiseAbs().maxCoeff(), mass_bound);
   EXPECT_LE(stiffness_error.cwiseAbs().maxCoeff(), stiffness_bound);
 }

@@ -16,7 +16,9 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-Case default_case() { return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json"); }
+Case default_case() {
+  return load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
+}
 
 /// Rigid rotation by the angle phi of the bladed disk with a free hub, in
 /// its dofs (sector frame, ring polar dofs, tip polar dofs).
@@ -46,8 +48,8 @@ TEST(RimTie, RigidRotationOfTheWholeBladedDiskStoresNoEnergy) {
   // Scale: what K does to this vector entry by entry without cancellation.
   const double scale = (Eigen::MatrixXd(bd.stiffness).cwiseAbs() * x.cwiseAbs()).maxCoeff();
   const double residual = kx.cwiseAbs().maxCoeff() / scale;
-  std::printf("rigid rotation: max|K x| / max(|K| |x|) = %.3e, energy 1/2 x^T K x = %.3e J\n", residual,
-              0.5 * x.dot(kx));
+  std::printf("rigid rotation: max|K x| / max(|K| |x|) = %.3e, energy 1/2 x^T K x = %.3e J\n",
+              residual, 0.5 * x.dot(kx));
   // Exact in exact arithmetic; each entry of K x is a sum of a handful of
   // products, so the cancellation leaves a few eps of the scale.
   EXPECT_LE(residual, 256 * eps);
@@ -59,7 +61,8 @@ TEST(RimTie, RotationOfTheRingAloneIsResistedByTheBlades) {
   const Case c = default_case();
   const BladedDisk bd = assemble_bladed_disk(c, HubSupport::free);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(bd.n_dofs());
-  for (int k = 0; k < bd.n_sectors; ++k) x(k * bd.dofs_per_sector + 2) = c.bladed_disk.rim_radius * 1e-3;
+  for (int k = 0; k < bd.n_sectors; ++k)
+    x(k * bd.dofs_per_sector + 2) = c.bladed_disk.rim_radius * 1e-3;
   const double energy = 0.5 * x.dot(bd.stiffness * x);
   std::printf("ring-only rotation energy: %.3e J\n", energy);
   EXPECT_GT(energy, 0.0);
@@ -69,8 +72,8 @@ TEST(BladeGeometry, TipAtTipRadiusAndTrailingTheRotation) {
   const Case c = default_case();
   const BladeGeometry g = blade_geometry(c.bladed_disk);
   const double r = g.nodes.back().norm();
-  std::printf("blade element length %.12f m, tip radius %.15f m, tip angle %.6f deg\n", g.element_length, r,
-              g.tip_angle * 180 / M_PI);
+  std::printf("blade element length %.12f m, tip radius %.15f m, tip angle %.6f deg\n",
+              g.element_length, r, g.tip_angle * 180 / M_PI);
   // GSL Brent to 1e-15 relative in L; |tip| then within a few eps of R_t.
   EXPECT_NEAR(r, c.bladed_disk.tip_radius, 1e-14);
   // Kinks turn clockwise for a > 0: the tip lags (negative polar angle, SPEC §2).

@@ -23,7 +23,8 @@ Eigen::Matrix<double, 8, 1> translation_x(double dtheta) {
   Eigen::Matrix<double, 8, 1> r;
   for (int node = 0; node < 2; ++node) {
     const double t = 1.0 + node * dtheta;
-    r.segment<4>(4 * node) << std::cos(t), -std::sin(t) / radius, -std::sin(t), -std::cos(t) / radius;
+    r.segment<4>(4 * node) << std::cos(t), -std::sin(t) / radius, -std::sin(t),
+        -std::cos(t) / radius;
   }
   return r;
 }
@@ -46,8 +47,9 @@ TEST(RingElement, SymmetricPositiveSemiDefinite) {
     EXPECT_LE((m - m.transpose()).cwiseAbs().maxCoeff(), 8 * eps * m.cwiseAbs().maxCoeff());
     const Eigen::VectorXd lk = Eigen::SelfAdjointEigenSolver<Matrix8d>(k).eigenvalues();
     const Eigen::VectorXd lm = Eigen::SelfAdjointEigenSolver<Matrix8d>(m).eigenvalues();
-    std::printf("n = %d: stiffness eigenvalues %.3e %.3e %.3e %.3e ... %.3e; min mass eigenvalue %.3e\n", n,
-                lk(0), lk(1), lk(2), lk(3), lk(7), lm(0));
+    std::printf(
+        "n = %d: stiffness eigenvalues %.3e %.3e %.3e %.3e ... %.3e; min mass eigenvalue %.3e\n", n,
+        lk(0), lk(1), lk(2), lk(3), lk(7), lm(0));
     // Semi-definite: no eigenvalue below round-off of the largest (64 eps ||K||).
     EXPECT_GE(lk(0), -64 * eps * lk(7));
     EXPECT_GT(lm(0), 0.0);
@@ -80,11 +82,13 @@ std::pair<double, double> translation_quotient(const BeamProperties& p, int n) {
 /// over successive halvings of the element from n = 20, using only meshes
 /// where the quotient stands 100 times above its round-off bound (round-off
 /// then moves a rate by at most log2(1.01/0.99) = 0.03).
-void check_translation_rate(const std::string& name, const BeamProperties& p, double expected_rate) {
+void check_translation_rate(const std::string& name, const BeamProperties& p,
+                            double expected_rate) {
   std::vector<double> quotient;
   for (int n = 20; n <= 640; n *= 2) {
     const auto [q, noise] = translation_quotient(p, n);
-    std::printf("%s, n = %4d: spurious omega^2 %.4e (round-off bound %.1e)\n", name.c_str(), n, q, noise);
+    std::printf("%s, n = %4d: spurious omega^2 %.4e (round-off bound %.1e)\n", name.c_str(), n, q,
+                noise);
     if (q < 100 * noise) break;
     quotient.push_back(q);
   }
