@@ -31,8 +31,16 @@ struct CalibrateOptions {
   double target_hz = 44.0;
 };
 
+struct SimulateOptions {
+  std::string case_path;
+  std::string method = "full";
+  std::string out = "out/simulate";
+  bool force = false;
+};
+
 int run_modes(const ModesOptions& options);
 int run_export(const ExportOptions& options);
 int run_calibrate(const CalibrateOptions& options);
+int run_simulate(const SimulateOptions& options);
 
 } // namespace rsi

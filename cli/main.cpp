@@ -10,9 +10,11 @@
 #include <CLI/CLI.hpp>
 
 #include "case_file.hpp"
+#include "central_difference.hpp"
 #include "commands.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
+#include "reference_run.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
@@ -39,6 +41,15 @@ int main(int argc, char** argv) {
   calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz]")
       ->capture_default_str();
 
+  rsi::SimulateOptions simulate;
+  CLI::App* simulate_cmd = app.add_subcommand(
+      "simulate", "One contact run -> DIR/history.csv, DIR/summary.json (exit 3 on blow-up)");
+  simulate_cmd->add_option("case", simulate.case_path, "case file (JSON)")->required();
+  simulate_cmd->add_option("--method", simulate.method, "full (reference)")->capture_default_str();
+  simulate_cmd->add_option("--out", simulate.out, "output directory")->capture_default_str();
+  simulate_cmd->add_flag("--force", simulate.force,
+                         "integrate even with a time step above the stability limit");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -57,6 +68,7 @@ int main(int argc, char** argv) {
     if (*modes_cmd) return rsi::run_modes(modes);
     if (*export_cmd) return rsi::run_export(export_options);
     if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
+    if (*simulate_cmd) return rsi::run_simulate(simulate);
   } catch (const rsi::CaseError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;
@@ -66,6 +78,12 @@ int main(int argc, char** argv) {
   } catch (const rsi::OutputError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;
+  } catch (const rsi::StabilityError& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 2;
+  } catch (const rsi::IntegrationError& e) {
+    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+    return 3;
   } catch (const rsi::ModalError& e) {
     std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
     return 3;

@@ -106,6 +106,11 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
 
 } // namespace
 
+double max_angular_frequency(const Eigen::SparseMatrix<double>& stiffness,
+                             const Eigen::SparseMatrix<double>& mass) {
+  return std::sqrt(std::max(sparse_largest_eigenvalue(stiffness, mass), 0.0));
+}
+
 double Modes::frequency_hz(int i) const {
   const double w2 = omega_squared(i);
   return std::copysign(std::sqrt(std::abs(w2)), w2) / (2.0 * M_PI);

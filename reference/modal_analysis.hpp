@@ -43,6 +43,11 @@ enum class ModalSolver {
 /// of K and M: 2 n^2 doubles, 64 MB at this size).
 constexpr int dense_limit = 2000;
 
+/// omega_max [rad/s] alone, by Lanczos (Spectra, Cholesky mode): cheap for
+/// any size, for the stability limit of explicit integration.
+double max_angular_frequency(const Eigen::SparseMatrix<double>& stiffness,
+                             const Eigen::SparseMatrix<double>& mass);
+
 /// The `count` lowest modes (1 <= count <= n, count < n for the sparse
 /// path) and omega_max of the model.
 Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,

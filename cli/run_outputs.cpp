@@ -1,0 +1,71 @@
+#include "run_outputs.hpp"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+namespace rsi {
+namespace {
+
+void append(std::string& out, double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  out += buffer;
+}
+
+} // namespace
+
+std::string history_csv(const History& h) {
+  const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
+  std::string out = "t";
+  for (int k = 1; k <= n_blades; ++k)
+    out += ",gap_" + std::to_string(k);
+  for (int k = 1; k <= n_blades; ++k)
+    out += ",lambda_" + std::to_string(k);
+  out += ",energy,external_work,contact_work\n";
+  for (int i = 0; i < h.n_rows(); ++i) {
+    append(out, h.time[i]);
+    for (int k = 0; k < n_blades; ++k)
+      out += ',', append(out, h.gap[i](k));
+    for (int k = 0; k < n_blades; ++k)
+      out += ',', append(out, h.lambda[i](k));
+    for (double x : {h.energy[i], h.external_work[i], h.contact_work[i]})
+      out += ',', append(out, x);
+    out += '\n';
+  }
+  return out;
+}
+
+std::string summary_json(const RunSummary& s) {
+  nlohmann::ordered_json j;
+  j["method"] = s.method;
+  j["status"] = s.status;
+  j["completed"] = s.completed;
+  j["dofs"] = s.n_dofs;
+  j["steps_requested"] = s.steps_requested;
+  j["steps"] = s.steps;
+  j["dt"] = s.dt;
+  j["omega_max"] = s.omega_max;
+  j["critical_dt"] = s.critical_dt;
+  j["wall_seconds"] = s.wall_seconds;
+  j["integration_seconds"] = s.integration_seconds;
+  j["max_penetration"] = s.max_penetration;
+  j["min_lambda"] = s.min_lambda;
+  j["max_lambda"] = s.max_lambda;
+  j["max_complementarity"] = s.max_complementarity;
+  j["max_friction_residual"] = s.max_friction_residual;
+  j["sliding_reversals"] = s.sliding_reversals;
+  j["max_active_contacts"] = s.max_active;
+  j["initial_energy"] = s.initial_energy;
+  j["max_energy"] = s.max_energy;
+  j["final_external_work"] = s.final_external_work;
+  j["final_contact_work"] = s.final_contact_work;
+  j["energy_balance_error"] = s.energy_balance_error;
+  j["energy_scale"] = s.energy_scale;
+  j["contact_intervals_blade_1"] = nlohmann::ordered_json::array();
+  for (const auto& [first, last] : s.contact_intervals_blade_1)
+    j["contact_intervals_blade_1"].push_back({first, last});
+  return j.dump(2) + "\n";
+}
+
+} // namespace rsi

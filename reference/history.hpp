@@ -1,0 +1,55 @@
+#pragma once
+// What a contact run produces (SPEC §5): the sampled history of the blade
+// tip gaps and multipliers with the energy terms, and the run's summary.
+// Both solvers (reference/ and reduced/) fill these same records.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace rsi {
+
+/// One row every output_every steps, the first at t = 0.
+struct History {
+  std::vector<double> time;            ///< t_n [s]
+  std::vector<Eigen::VectorXd> gap;    ///< g_k at u_n, blades 1..N [m]
+  std::vector<Eigen::VectorXd> lambda; ///< lambda_k of the step that produced u_n [N]
+  std::vector<double> energy;          ///< discrete energy E_{n-1/2} [J]
+  std::vector<double> external_work;   ///< W_ext up to step n-1 [J]
+  std::vector<double> contact_work;    ///< W_contact up to step n-1 [J]
+
+  int n_rows() const { return static_cast<int>(time.size()); }
+};
+
+struct RunSummary {
+  std::string method;
+  int n_dofs = 0; ///< dofs integrated (bladed disk + casing)
+  int steps_requested = 0;
+  int steps = 0; ///< steps actually taken
+  bool completed = false;
+  std::string status; ///< "completed" or what stopped the run, with the step
+  double dt = 0.0;
+  double omega_max = 0.0;    ///< of the integrated model [rad/s]
+  double critical_dt = 0.0;  ///< 2 / omega_max [s]
+  double wall_seconds = 0.0; ///< whole run: assembly, omega_max, integration
+  double integration_seconds = 0.0;
+  double max_penetration = 0.0;       ///< [m]
+  double min_lambda = 0.0;            ///< [N]
+  double max_lambda = 0.0;            ///< [N]
+  double max_complementarity = 0.0;   ///< max |lambda g| [N m]
+  double max_friction_residual = 0.0; ///< [N]
+  int sliding_reversals = 0;          ///< (step, contact) pairs where sliding changed sign
+  double initial_energy = 0.0;        ///< [J]
+  double max_energy = 0.0;            ///< [J]
+  double energy_balance_error = 0.0;  ///< max_n |E_n - E_0 - W_ext - W_contact| [J]
+  double energy_scale = 0.0;          ///< max_n max(E_n, |W_ext|, |W_contact|) [J]
+  double final_external_work = 0.0;
+  double final_contact_work = 0.0;
+  int max_active = 0; ///< most contacts active at once
+  std::vector<std::pair<double, double>>
+      contact_intervals_blade_1; ///< [first, last] step times with lambda_1 > 0
+};
+
+} // namespace rsi

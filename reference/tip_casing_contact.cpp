@@ -1,0 +1,79 @@
+#include "tip_casing_contact.hpp"
+
+#include <cmath>
+
+#include "ring_element.hpp"
+
+namespace rsi {
+
+TipCasingContact::TipCasingContact(const BladedDisk& bladed_disk, const Casing& casing,
+                                   const Case& c)
+    : m_tip_radial(bladed_disk.tip_radial)
+    , m_tip_tangential(bladed_disk.tip_tangential)
+    , m_casing_elements(casing.n_elements)
+    , m_tip_radius(c.bladed_disk.tip_radius)
+    , m_casing_radius(casing.radius)
+    , m_omega(c.operating_point.rotation_speed)
+    , m_mu(c.operating_point.friction_coefficient) {
+  for (int k = 0; k < bladed_disk.n_sectors; ++k)
+    m_tip_angle0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
+  for (int first : casing.node_first_dof)
+    m_casing_node_dof.push_back(first < 0 ? -1 : bladed_disk.n_dofs() + first);
+}
+
+ContactState TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                        const Eigen::Ref<const Eigen::VectorXd>& v,
+                                        double t) const {
+  const int nc = n_constraints();
+  const double pitch = 2.0 * M_PI / m_casing_elements;
+  const double arc = m_casing_radius * pitch;
+  ContactState s;
+  s.gap.resize(nc);
+  s.sliding_velocity.resize(nc);
+  s.friction_sign.resize(nc);
+  s.gradient.resize(nc);
+  s.direction.resize(nc);
+  for (int k = 0; k < nc; ++k) {
+    const int iu = m_tip_radial[k];
+    const int iv = m_tip_tangential[k];
+    double alpha = std::fmod(m_tip_angle0[k] + m_omega * t + x(iv) / m_tip_radius, 2.0 * M_PI);
+    if (alpha < 0.0) alpha += 2.0 * M_PI;
+    int element = static_cast<int>(std::floor(alpha / pitch));
+    double xi = alpha / pitch - element;
+    if (element >= m_casing_elements) { // alpha within round-off of 2 pi
+      element = m_casing_elements - 1;
+      xi = 1.0;
+    }
+    const Eigen::Vector4d n = hermite_values(xi, arc);
+    SparseRow normal{{iu, -1.0}};
+    SparseRow tangential{{iv, -1.0}};
+    double u_casing = 0.0;
+    double v_casing_rate = 0.0;
+    for (int node = 0; node < 2; ++node) {
+      const int first = m_casing_node_dof[(element + node) % m_casing_elements];
+      if (first < 0) continue; // the clamped node: zero displacement
+      for (int d = 0; d < 2; ++d) {
+        const double shape = n(2 * node + d);
+        normal.emplace_back(first + d, shape);
+        tangential.emplace_back(first + 2 + d, shape);
+        u_casing += shape * x(first + d);
+        v_casing_rate += shape * v(first + 2 + d);
+      }
+    }
+    s.gap(k) = m_casing_radius + u_casing - (m_tip_radius + x(iu));
+    s.sliding_velocity(k) = m_omega * (m_tip_radius + x(iu)) + v(iv) - v_casing_rate;
+    const double sign =
+        m_mu > 0.0
+            ? (s.sliding_velocity(k) > 0.0 ? 1.0 : (s.sliding_velocity(k) < 0.0 ? -1.0 : 0.0))
+            : 0.0;
+    s.friction_sign(k) = sign;
+    SparseRow direction = normal;
+    for (const auto& [dof, c] : tangential)
+      direction.emplace_back(dof, m_mu * sign * c);
+    s.gradient[k] = std::move(normal);
+    s.direction[k] = std::move(direction);
+  }
+  return s;
+}
+
+} // namespace rsi
