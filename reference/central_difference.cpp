@@ -1,5 +1,6 @@
 #include "central_difference.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -19,7 +20,7 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
   if (stiffness.rows() != mass.rows() || stiffness.cols() != mass.cols() ||
       mass.rows() != mass.cols())
     throw std::invalid_argument("CentralDifference: K and M must be square and of the same size");
-  m_mass_factor.compute(m_m);
+  m_mass_factor.compute(mass);
   if (m_mass_factor.info() != Eigen::Success)
     throw IntegrationError(
         "central differences: the mass matrix is not positive definite (Cholesky failed)");
@@ -35,16 +36,20 @@ const Eigen::VectorXd& CentralDifference::inverse_mass_column(int dof) {
   return column;
 }
 
-Eigen::VectorXd CentralDifference::inverse_mass_times(const SparseRow& row) {
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(m_m.rows());
-  for (const auto& [dof, c] : row)
-    out += c * inverse_mass_column(dof);
-  return out;
+double CentralDifference::contact_flexibility(const SparseRow& gradient,
+                                              const SparseRow& direction) {
+  double sum = 0.0;
+  for (const auto& [b, db] : direction) {
+    const Eigen::VectorXd& column = inverse_mass_column(b);
+    for (const auto& [a, ga] : gradient)
+      sum += ga * db * column(a);
+  }
+  return m_dt * m_dt * sum;
 }
 
-double CentralDifference::discrete_energy() const {
+double CentralDifference::energy() const {
   const Eigen::VectorXd v = (m_u - m_u_prev) / m_dt;
-  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_k * m_u);
+  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_ku);
 }
 
 void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
@@ -54,9 +59,9 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   m_u_prev = 0.5 * m_dt * m_dt * m_mass_factor.solve(f0);
   m_ku = Eigen::VectorXd::Zero(n);
   m_lambda = Eigen::VectorXd::Zero(m_law.n_constraints());
-  m_gap = m_law.evaluate(m_u, Eigen::VectorXd::Zero(n), 0.0).gap;
-  m_energy = discrete_energy();
-  m_initial_energy = m_energy;
+  m_law.evaluate(m_u, Eigen::VectorXd::Zero(n), 0.0, m_state);
+  m_gap = m_state.gap;
+  m_initial_energy = energy();
   m_external_work = 0.0;
   m_contact_work = 0.0;
 }
@@ -64,32 +69,31 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
 Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
                                                     Eigen::VectorXd& correction) {
   const int nc = m_law.n_constraints();
-  const double dt2 = m_dt * m_dt;
   std::vector<bool> active(nc);
   for (int k = 0; k < nc; ++k)
     active[k] = s.gap(k) < 0.0;
-  std::vector<Eigen::VectorXd> md(nc); // M^-1 D_k^T, computed when k first becomes active
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(nc);
-  correction = Eigen::VectorXd::Zero(m_m.rows());
+  if (std::none_of(active.begin(), active.end(), [](bool a) { return a; })) return lambda;
+  // W_ij = dt^2 G_i M^-1 D_j^T for every pair met, computed once per step.
+  Eigen::MatrixXd w = Eigen::MatrixXd::Constant(nc, nc, std::nan(""));
+  auto entry = [&](int i, int j) {
+    if (std::isnan(w(i, j))) w(i, j) = contact_flexibility(s.gradient[i], s.direction[j]);
+    return w(i, j);
+  };
   for (int iteration = 0; iteration <= 4 * nc + 4; ++iteration) {
     std::vector<int> idx;
     for (int k = 0; k < nc; ++k)
       if (active[k]) idx.push_back(k);
     const int na = static_cast<int>(idx.size());
-    if (na == 0) {
-      correction.setZero();
-      return lambda;
-    }
-    Eigen::MatrixXd w(na, na);
+    if (na == 0) return lambda;
+    Eigen::MatrixXd wa(na, na);
     Eigen::VectorXd rhs(na);
-    for (int b = 0; b < na; ++b)
-      if (md[idx[b]].size() == 0) md[idx[b]] = inverse_mass_times(s.direction[idx[b]]);
     for (int a = 0; a < na; ++a) {
       rhs(a) = -s.gap(idx[a]);
       for (int b = 0; b < na; ++b)
-        w(a, b) = dt2 * dot(s.gradient[idx[a]], md[idx[b]]);
+        wa(a, b) = entry(idx[a], idx[b]);
     }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(w);
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(wa);
     if (!lu.isInvertible())
       throw IntegrationError("central differences: singular contact matrix W (" +
                              std::to_string(na) + " active constraints) at step " +
@@ -100,19 +104,24 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
       active[idx[most_negative]] = false;
       continue;
     }
-    correction.setZero();
-    for (int b = 0; b < na; ++b)
-      correction += (dt2 * la(b)) * md[idx[b]];
+    // A constraint the correction would close joins the active set:
+    // g_k + G_k dt^2 M^-1 D^T lambda = g_k + sum_j W_kj lambda_j.
     bool added = false;
-    for (int k = 0; k < nc; ++k)
-      if (!active[k] && s.gap(k) + dot(s.gradient[k], correction) < 0.0) {
-        active[k] = true;
-        added = true;
-      }
+    for (int k = 0; k < nc; ++k) {
+      if (active[k]) continue;
+      double closed = s.gap(k);
+      for (int b = 0; b < na; ++b)
+        closed += entry(k, idx[b]) * la(b);
+      if (closed < 0.0) active[k] = added = true;
+    }
     if (added) continue;
-    lambda.setZero();
-    for (int b = 0; b < na; ++b)
+    // u_{n+1} - u~ = dt^2 M^-1 sum_j lambda_j D_j^T.
+    correction.setZero(m_m.rows());
+    for (int b = 0; b < na; ++b) {
       lambda(idx[b]) = la(b);
+      for (const auto& [dof, c] : s.direction[idx[b]])
+        correction += (m_dt * m_dt * la(b) * c) * inverse_mass_column(dof);
+    }
     return lambda;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
@@ -121,27 +130,37 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
 
 StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n) {
   const double dt2 = m_dt * m_dt;
-  const Eigen::VectorXd predicted = 2.0 * m_u - m_u_prev + dt2 * m_mass_factor.solve(f_n - m_ku);
+  m_predicted = f_n - m_ku;
+  m_predicted = m_mass_factor.solve(m_predicted);
+  m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
   const double t_next = (m_n + 1) * m_dt;
-  const ContactState s = m_law.evaluate(predicted, (predicted - m_u) / m_dt, t_next);
-  Eigen::VectorXd correction;
-  m_lambda = solve_active_set(s, correction);
-  const Eigen::VectorXd next = predicted + correction;
+  m_velocity = (m_predicted - m_u) / m_dt;
+  m_law.evaluate(m_predicted, m_velocity, t_next, m_predicted_state);
+  const ContactState& s = m_predicted_state;
+  m_lambda = solve_active_set(s, m_correction);
+  const bool corrected = m_lambda.any();
 
-  // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T.
-  const Eigen::VectorXd half_span = 0.5 * (next - m_u_prev);
-  m_external_work += f_n.dot(half_span);
+  // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T;
+  // m_predicted becomes u_{n+1}.
+  if (corrected) m_predicted += m_correction;
+  m_external_work += 0.5 * (f_n.dot(m_predicted) - f_n.dot(m_u_prev));
   for (int k = 0; k < m_lambda.size(); ++k)
-    if (m_lambda(k) != 0.0) m_contact_work += m_lambda(k) * dot(s.direction[k], half_span);
+    if (m_lambda(k) != 0.0)
+      m_contact_work +=
+          0.5 * m_lambda(k) * (dot(s.direction[k], m_predicted) - dot(s.direction[k], m_u_prev));
 
-  m_u_prev = m_u;
-  m_u = next;
-  m_ku = m_k * m_u;
+  m_u_prev.swap(m_u);
+  m_u.swap(m_predicted);
+  m_ku.noalias() = m_k * m_u;
   ++m_n;
-  m_energy = discrete_energy();
 
   // Monitors at the corrected state (SPEC V5).
-  const ContactState after = m_law.evaluate(m_u, (m_u - m_u_prev) / m_dt, t_next);
+  // Without a correction u_{n+1} is the prediction: same gaps, same velocities.
+  if (corrected) {
+    m_velocity = (m_u - m_u_prev) / m_dt;
+    m_law.evaluate(m_u, m_velocity, t_next, m_state);
+  }
+  const ContactState& after = corrected ? m_state : s;
   m_gap = after.gap;
   StepReport report;
   const double mu = m_law.friction_coefficient();

@@ -18,8 +18,11 @@
 // E - E_0 - W_ext - W_contact is round-off unless the scheme is broken.
 //
 // M^-1 is applied through a sparse Cholesky factorization (Eigen
-// SimplicialLLT, AMD ordering); its status is checked after factorizing.
-// The columns M^-1 e_i met by contact rows are computed once and cached.
+// SimplicialLDLT, AMD ordering: the fastest solve of those measured by
+// bench/bench_mass_solve at this size); its status is checked after
+// factorizing. The columns M^-1 e_i met by contact rows are computed once
+// and cached. The energy costs a product with M, so it is computed when
+// asked (the works are summed at every step).
 
 #include <stdexcept>
 #include <vector>
@@ -67,31 +70,37 @@ public:
   const Eigen::VectorXd& previous_displacement() const { return m_u_prev; }
   const Eigen::VectorXd& lambda() const { return m_lambda; } ///< multipliers of the last step [N]
   const Eigen::VectorXd& gap() const { return m_gap; }       ///< gaps at u_n
-  double energy() const { return m_energy; }                 ///< E_{n-1/2} [J]
+  double energy() const; ///< E_{n-1/2} [J], computed from its definition
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
 
 private:
   const Eigen::VectorXd& inverse_mass_column(int dof);
-  Eigen::VectorXd inverse_mass_times(const SparseRow& row);
-  double discrete_energy() const;
+  /// dt^2 G M^-1 D^T for one pair of rows, from the cached columns of M^-1.
+  double contact_flexibility(const SparseRow& gradient, const SparseRow& direction);
   Eigen::VectorXd solve_active_set(const ContactState& predicted, Eigen::VectorXd& correction);
 
-  Eigen::SparseMatrix<double> m_k;
-  Eigen::SparseMatrix<double> m_m;
+  using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>; // faster products
+  RowMajorMatrix m_k;
+  RowMajorMatrix m_m;
   double m_dt;
   const ContactLaw& m_law;
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> m_mass_factor;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mass_factor;
   std::vector<Eigen::VectorXd> m_inverse_columns;
 
   int m_n = 0;
   Eigen::VectorXd m_u;
   Eigen::VectorXd m_u_prev;
-  Eigen::VectorXd m_ku;
+  Eigen::VectorXd m_ku; ///< K u_n
+  // Work storage, kept to avoid allocations in the step loop.
+  Eigen::VectorXd m_predicted;
+  Eigen::VectorXd m_correction;
+  Eigen::VectorXd m_velocity;
+  ContactState m_predicted_state;
+  ContactState m_state; ///< at u_n
   Eigen::VectorXd m_lambda;
   Eigen::VectorXd m_gap;
-  double m_energy = 0.0;
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;

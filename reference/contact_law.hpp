@@ -38,9 +38,12 @@ class ContactLaw {
 public:
   virtual ~ContactLaw() = default;
   virtual int n_constraints() const = 0;
-  /// Gaps and rows at displacement x and velocity v of the whole system at time t.
-  virtual ContactState evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
-                                const Eigen::Ref<const Eigen::VectorXd>& v, double t) const = 0;
+  /// Gaps and rows at displacement x and velocity v of the whole system at
+  /// time t, written into `state` (its storage is reused from call to call:
+  /// the integrator calls this twice per step).
+  virtual void evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
+                        const Eigen::Ref<const Eigen::VectorXd>& v, double t,
+                        ContactState& state) const = 0;
   /// Friction coefficient (for the friction-law monitor); 0 for frictionless laws.
   virtual double friction_coefficient() const = 0;
 };

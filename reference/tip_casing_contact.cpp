@@ -21,13 +21,12 @@ TipCasingContact::TipCasingContact(const BladedDisk& bladed_disk, const Casing& 
     m_casing_node_dof.push_back(first < 0 ? -1 : bladed_disk.n_dofs() + first);
 }
 
-ContactState TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
-                                        const Eigen::Ref<const Eigen::VectorXd>& v,
-                                        double t) const {
+void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
+                                const Eigen::Ref<const Eigen::VectorXd>& v, double t,
+                                ContactState& s) const {
   const int nc = n_constraints();
   const double pitch = 2.0 * M_PI / m_casing_elements;
   const double arc = m_casing_radius * pitch;
-  ContactState s;
   s.gap.resize(nc);
   s.sliding_velocity.resize(nc);
   s.friction_sign.resize(nc);
@@ -45,8 +44,10 @@ ContactState TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
       xi = 1.0;
     }
     const Eigen::Vector4d n = hermite_values(xi, arc);
-    SparseRow normal{{iu, -1.0}};
-    SparseRow tangential{{iv, -1.0}};
+    SparseRow& normal = s.gradient[k];
+    SparseRow& direction = s.direction[k];
+    normal.assign(1, {iu, -1.0});
+    direction.assign(1, {iv, -1.0}); // T_k first, scaled by mu s_k below
     double u_casing = 0.0;
     double v_casing_rate = 0.0;
     for (int node = 0; node < 2; ++node) {
@@ -55,7 +56,7 @@ ContactState TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
       for (int d = 0; d < 2; ++d) {
         const double shape = n(2 * node + d);
         normal.emplace_back(first + d, shape);
-        tangential.emplace_back(first + 2 + d, shape);
+        direction.emplace_back(first + 2 + d, shape);
         u_casing += shape * x(first + d);
         v_casing_rate += shape * v(first + 2 + d);
       }
@@ -67,13 +68,11 @@ ContactState TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
             ? (s.sliding_velocity(k) > 0.0 ? 1.0 : (s.sliding_velocity(k) < 0.0 ? -1.0 : 0.0))
             : 0.0;
     s.friction_sign(k) = sign;
-    SparseRow direction = normal;
-    for (const auto& [dof, c] : tangential)
-      direction.emplace_back(dof, m_mu * sign * c);
-    s.gradient[k] = std::move(normal);
-    s.direction[k] = std::move(direction);
+    // D_k = G_k + mu s_k T_k: scale T_k (held in `direction`), then append G_k.
+    for (auto& entry : direction)
+      entry.second *= m_mu * sign;
+    direction.insert(direction.end(), normal.begin(), normal.end());
   }
-  return s;
 }
 
 } // namespace rsi

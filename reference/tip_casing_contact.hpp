@@ -30,8 +30,9 @@ public:
   TipCasingContact(const BladedDisk& bladed_disk, const Casing& casing, const Case& c);
 
   int n_constraints() const override { return static_cast<int>(m_tip_radial.size()); }
-  ContactState evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
-                        const Eigen::Ref<const Eigen::VectorXd>& v, double t) const override;
+  void evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
+                const Eigen::Ref<const Eigen::VectorXd>& v, double t,
+                ContactState& s) const override;
   double friction_coefficient() const override { return m_mu; }
 
 private:
