@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job: builds rsi and runs the paper's case (data/cases/batailly2007.json).
-# Today that is the modal analysis of both parts, the matrix export and the
-# frequency / nodal-diameter figure (paper Fig. 3); the reference and reduced
-# contact solvers and their report are not written yet (issues 3-5).
+# Today that is the modal analysis of both parts, the matrix export, the
+# frequency / nodal-diameter figure (paper Fig. 3) and the full reference
+# contact run with its figures (paper Figs. 9-11); the reduced solvers and
+# the method-comparison report are not written yet (issues 4-5).
 set -euo pipefail
 cd "$(dirname "$0")"
 source .ci/deps.sh
@@ -15,6 +16,8 @@ out=out/main
 ./build/cli/rsi modes "$case_file" --part casing --count 40 --out "$out/modes-casing"
 ./build/cli/rsi export "$case_file" --out "$out/export"
 /usr/bin/python3 reports/plot_fig3.py "$out/modes-bladed-disk/modes.csv" "$out/fig3_nodal_diameters.png"
+./build/cli/rsi simulate "$case_file" --method full --out "$out/reference"
+/usr/bin/python3 reports/plot_reference_run.py "$out/reference" "$out"
 echo
-echo "main job done (modal analysis only: the contact solvers are not written yet)."
-echo "results in $out/: modes-bladed-disk/modes.csv, modes-casing/modes.csv, export/, fig3_nodal_diameters.png"
+echo "main job done: modal analysis and the full reference run (the reduced solvers are not written yet)."
+echo "results in $out/: modes-*/modes.csv, export/, reference/{history.csv,summary.json}, *.png"

@@ -1,5 +1,6 @@
 #include "run_outputs.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
@@ -36,6 +37,18 @@ std::string history_csv(const History& h) {
   return out;
 }
 
+std::string casing_snapshot_csv(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+  std::string out = "node,theta,u,v\n";
+  for (int j = 0; j < u.size(); ++j) {
+    out += std::to_string(j) + ",";
+    append(out, 2.0 * M_PI * j / u.size());
+    out += ',', append(out, u(j));
+    out += ',', append(out, v(j));
+    out += '\n';
+  }
+  return out;
+}
+
 std::string summary_json(const RunSummary& s) {
   nlohmann::ordered_json j;
   j["method"] = s.method;
@@ -56,6 +69,7 @@ std::string summary_json(const RunSummary& s) {
   j["max_friction_residual"] = s.max_friction_residual;
   j["sliding_reversals"] = s.sliding_reversals;
   j["max_active_contacts"] = s.max_active;
+  j["first_contact_step"] = s.first_contact_step;
   j["initial_energy"] = s.initial_energy;
   j["max_energy"] = s.max_energy;
   j["final_external_work"] = s.final_external_work;

@@ -39,6 +39,10 @@ int run_simulate(const SimulateOptions& options) {
   if (run.progress) std::fprintf(stderr, "\n");
   write_text_file(options.out + "/history.csv", history_csv(result.history));
   write_text_file(options.out + "/summary.json", summary_json(result.summary));
+  if (result.casing_u_at_first_contact.size() > 0)
+    write_text_file(
+        options.out + "/casing_first_contact.csv",
+        casing_snapshot_csv(result.casing_u_at_first_contact, result.casing_v_at_first_contact));
   const RunSummary& s = result.summary;
   std::printf("%s: method %s, %d dofs, %d of %d steps in %.3f s (integration %.3f s)\n",
               c.source.c_str(), s.method.c_str(), s.n_dofs, s.steps, s.steps_requested,

@@ -47,7 +47,8 @@ struct RunSummary {
   double energy_scale = 0.0;          ///< max_n max(E_n, |W_ext|, |W_contact|) [J]
   double final_external_work = 0.0;
   double final_contact_work = 0.0;
-  int max_active = 0; ///< most contacts active at once
+  int max_active = 0;          ///< most contacts active at once
+  int first_contact_step = -1; ///< first step with any lambda > 0 (-1: none)
   std::vector<std::pair<double, double>>
       contact_intervals_blade_1; ///< [first, last] step times with lambda_1 > 0
 };

@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "case_file.hpp"
+#include <Eigen/Core>
+
 #include "history.hpp"
 
 namespace rsi {
@@ -30,6 +32,11 @@ struct RunOptions {
 struct RunResult {
   History history;
   RunSummary summary;
+  /// Casing radial and tangential displacement of every casing node (zeros
+  /// at the clamp) at the first contact (empty without contact), for the
+  /// figure of the casing deformation (paper Fig. 9).
+  Eigen::VectorXd casing_u_at_first_contact;
+  Eigen::VectorXd casing_v_at_first_contact;
 };
 
 /// Throws StabilityError (dt too large, not forced), IntegrationError or

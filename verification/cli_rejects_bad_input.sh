@@ -43,6 +43,7 @@ variant("missing", lambda d: d["bladed_disk"].pop("tip_radius"))
 variant("type", lambda d: d["material"].update(density="steel"))
 variant("range", lambda d: d["bladed_disk"]["blade_section"].update(thickness=-0.002))
 variant("clearance", lambda d: d["casing"].update(radius=0.499))
+variant("unstable", lambda d: d["time"].update(step=3e-6))
 PY
 
 expect 2 "no-such-file.json" -- "$rsi" modes "$work/no-such-file.json" --out "$work/out"
@@ -60,6 +61,8 @@ expect 2 "frobnicate" -- "$rsi" frobnicate "$good"
 expect 2 "case is required" -- "$rsi" modes
 expect 2 "cannot create the output directory" -- "$rsi" modes "$good" --out /proc/rsi-cannot-write-here
 expect 2 "a subcommand is required" -- "$rsi"
+expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
+expect 2 "--method: must be full" -- "$rsi" simulate "$good" --method modal --out "$work/out"
 expect 0 "--count" -- "$rsi" modes --help
 
 echo "$passes passed, $failures failed"
