@@ -11,6 +11,16 @@
 
 namespace rsi {
 
+/// Contact monitors of one step, at the corrected u_{n+1} (SPEC §3, V5).
+struct StepReport {
+  int n_active = 0;
+  double max_penetration = 0.0;       ///< max(0, -g_k) [m]
+  double min_lambda = 0.0;            ///< min lambda_k over all constraints [N]
+  double max_complementarity = 0.0;   ///< max |lambda_k g_k| [N m]
+  double max_friction_residual = 0.0; ///< max | f_t + mu lambda sign(v_slide) | [N]
+  int sliding_reversals = 0;          ///< active constraints whose sliding changed sign
+};
+
 /// One row every output_every steps, the first at t = 0.
 struct History {
   std::vector<double> time;            ///< t_n [s]

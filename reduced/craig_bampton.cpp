@@ -1,0 +1,39 @@
+#include "craig_bampton.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "guyan.hpp"
+#include "modal_analysis.hpp"
+
+namespace rsi {
+
+ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
+                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta) {
+  if (eta < 0 || eta > p.n_interior())
+    throw ReductionError("--modes: Craig-Bampton takes 0 to " + std::to_string(p.n_interior()) +
+                         " fixed-interface modes (the interior dofs), got " + std::to_string(eta));
+  const auto start = std::chrono::steady_clock::now();
+  ReducedBasis basis;
+  basis.method = "cb";
+  basis.n_modes = eta;
+  const Eigen::MatrixXd psi = constraint_modes(stiffness, p);
+  Eigen::MatrixXd t = Eigen::MatrixXd::Zero(p.n(), eta + p.n_boundary());
+  if (eta > 0) {
+    const Modes fixed = lowest_modes(sparse_block(stiffness, p.interior, p.interior),
+                                     sparse_block(mass, p.interior, p.interior), eta);
+    t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
+  }
+  t.rightCols(p.n_boundary()) =
+      place_rows(p.n(), p.interior, psi) +
+      place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
+  basis.transformation = t;
+  for (int b = 0; b < p.n_boundary(); ++b)
+    basis.boundary_position.push_back(eta + b);
+  project(stiffness, mass, basis);
+  basis.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return basis;
+}
+
+} // namespace rsi

@@ -1,0 +1,85 @@
+#include "craig_chang_martinez.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/Eigenvalues>
+
+#include "guyan.hpp"
+#include "modal_analysis.hpp"
+
+namespace rsi {
+
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  int psi) {
+  const int n = p.n();
+  const int nb = p.n_boundary();
+  if (psi < 0 || psi > n - nb)
+    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(n - nb) +
+                         " free-interface modes (dofs minus boundary dofs), got " +
+                         std::to_string(psi));
+  const auto start = std::chrono::steady_clock::now();
+  ReducedBasis basis;
+  basis.method = "ccm";
+  basis.n_modes = psi;
+
+  // R(:, B) = K^-1 E_B - Phi_1 Omega_1^-1 Phi_1B^T (eq. 14, boundary columns only).
+  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> factor(stiffness);
+  if (factor.info() != Eigen::Success)
+    throw ReductionError(
+        "Craig-Chang-Martinez: K is not positive definite (CHOLMOD): the residual flexibility "
+        "needs a supported part (is the hub clamped?)");
+  const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
+  Eigen::MatrixXd r = factor.solve(unit);
+  if (factor.info() != Eigen::Success)
+    throw ReductionError("Craig-Chang-Martinez: CHOLMOD solve failed");
+  Eigen::MatrixXd phi1;
+  if (psi > 0) {
+    const Modes free = lowest_modes(stiffness, mass, psi);
+    phi1 = free.shapes;
+    r -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
+         take_rows(phi1, p.boundary).transpose();
+  }
+  const Eigen::MatrixXd r_b = take_rows(r, p.boundary);
+
+  // cond(R_B): R_B is symmetric positive semi-definite in exact arithmetic.
+  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                  0.5 * (r_b + r_b.transpose()), Eigen::EigenvaluesOnly)
+                                  .eigenvalues();
+  basis.cond_rb = eig(0) > 0.0 ? eig(nb - 1) / eig(0) : std::numeric_limits<double>::infinity();
+  const double limit = 1.0 / (n * std::numeric_limits<double>::epsilon());
+  if (!(basis.cond_rb < limit)) {
+    std::ostringstream message;
+    message << "Craig-Chang-Martinez: the residual flexibility R_B of the boundary set is "
+               "numerically singular, "
+               "cond(R_B) = "
+            << basis.cond_rb << " >= 1/(n eps) = " << limit
+            << "; attachment modes on rotation dofs or too many free modes cause this (paper §5.3)";
+    throw ReductionError(message.str());
+  }
+  const Eigen::LDLT<Eigen::MatrixXd> r_b_factor(r_b);
+  // Columns for q_B: R(:, B) R_B^-1 (identity on the boundary rows).
+  const Eigen::MatrixXd attachment = r_b_factor.solve(r.transpose()).transpose();
+  Eigen::MatrixXd t(n, nb + psi);
+  t.leftCols(nb) = attachment;
+  if (psi > 0) t.rightCols(psi) = phi1 - attachment * take_rows(phi1, p.boundary);
+  // Exact zeros on the boundary rows of the modal columns and identity on the
+  // attachment ones hold to round-off; set them exactly so q_B is u_B.
+  for (int b = 0; b < nb; ++b) {
+    t.row(p.boundary[b]).setZero();
+    t(p.boundary[b], b) = 1.0;
+  }
+  basis.transformation = t;
+  for (int b = 0; b < nb; ++b)
+    basis.boundary_position.push_back(b);
+  project(stiffness, mass, basis);
+  basis.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return basis;
+}
+
+} // namespace rsi

@@ -1,0 +1,28 @@
+#pragma once
+// Craig-Chang-Martinez (paper eqs. 8-20): psi free-interface modes Phi_1
+// (the lowest modes of the whole bladed disk) and n_B attachment modes
+// through the residual flexibility R = K^-1 - Phi_1 Omega_1^-1 Phi_1^T
+// (eq. 14), transformed to the coordinates q = (q_B, u_1) (eq. 20):
+//   u_B = q_B,
+//   u_I = R_I R_B^-1 q_B + (Phi_1I - R_I R_B^-1 Phi_1B) u_1,
+// with R_B = R(B, B), R_I = R(I, B). K^-1 on the boundary columns comes
+// from a sparse Cholesky factorization of K (CHOLMOD).
+//
+// R_B must be invertible: its condition number is reported, and a basis
+// with cond(R_B) >= 1/(n eps) (no significant digit left in R_B^-1) is
+// refused with ReductionError. Attachment modes on rotation dofs make R_B
+// ill-conditioned (paper §5.3; Bladh, Pierre, Castanier, AIAA J. 41, 2003).
+// Valid range: 0 <= psi <= n - n_B.
+
+#include <Eigen/SparseCore>
+
+#include "partition.hpp"
+#include "reduced_basis.hpp"
+
+namespace rsi {
+
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  int psi);
+
+} // namespace rsi

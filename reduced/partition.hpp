@@ -1,0 +1,37 @@
+#pragma once
+// Boundary / interior partition of the bladed disk (paper eq. 3): the
+// boundary B is a list of dofs kept as physical coordinates (the 44 tip
+// u, v by default), the interior I is every other dof, in increasing order.
+
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace rsi {
+
+struct Partition {
+  std::vector<int> boundary; ///< B, in the order given
+  std::vector<int> interior; ///< I, ascending
+
+  int n() const { return static_cast<int>(boundary.size() + interior.size()); }
+  int n_boundary() const { return static_cast<int>(boundary.size()); }
+  int n_interior() const { return static_cast<int>(interior.size()); }
+};
+
+/// Throws std::invalid_argument for a repeated or out-of-range boundary dof.
+Partition make_partition(int n_dofs, const std::vector<int>& boundary);
+
+/// The block A(rows, cols) of a sparse matrix, as a sparse matrix.
+Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& a,
+                                         const std::vector<int>& rows,
+                                         const std::vector<int>& cols);
+
+/// Scatter: the n x c matrix with rows `rows` taken from `block` and zero elsewhere.
+Eigen::MatrixXd place_rows(int n, const std::vector<int>& rows,
+                           const Eigen::Ref<const Eigen::MatrixXd>& block);
+
+/// Gather: the rows `rows` of `a`.
+Eigen::MatrixXd take_rows(const Eigen::Ref<const Eigen::MatrixXd>& a, const std::vector<int>& rows);
+
+} // namespace rsi

@@ -1,0 +1,35 @@
+#pragma once
+// A reduction basis of the bladed disk: u = T q, with the boundary dofs
+// kept as physical coordinates inside q (SPEC §3), and the reduced matrices
+// K^ = T^T K T, M^ = T^T M T (paper eq. 6).
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace rsi {
+
+/// A reduction that cannot be built as asked: more modes than exist, a
+/// boundary set making R_B numerically singular (exit status 2 in the CLI).
+class ReductionError : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct ReducedBasis {
+  std::string method;             ///< "cb", "ccm" or "guyan"
+  int n_modes = 0;                ///< eta (CB), psi (CCM), 0 (Guyan)
+  Eigen::MatrixXd transformation; ///< T, n x r
+  Eigen::MatrixXd stiffness;      ///< K^ = T^T K T, r x r
+  Eigen::MatrixXd mass;           ///< M^ = T^T M T, r x r
+  /// Position in q of each boundary dof, in the order of the partition's boundary.
+  std::vector<int> boundary_position;
+  double cond_rb = 0.0;       ///< cond(R_B) (CCM only; 0 otherwise)
+  double build_seconds = 0.0; ///< time to build T, K^, M^
+
+  int n_reduced() const { return static_cast<int>(transformation.cols()); }
+};
+
+} // namespace rsi

@@ -1,0 +1,133 @@
+#include "run_monitor.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace rsi {
+
+void check_time_step(double dt, double omega_max, bool force, RunSummary& s) {
+  s.dt = dt;
+  s.omega_max = omega_max;
+  s.critical_dt = 2.0 / omega_max;
+  if (dt >= s.critical_dt && !force) {
+    std::ostringstream message;
+    message.precision(6);
+    message << "time.step = " << dt
+            << " s is not below the central-difference stability limit 2/omega_max = "
+            << s.critical_dt << " s (omega_max = " << omega_max
+            << " rad/s); use a smaller step or --force";
+    throw StabilityError(message.str());
+  }
+}
+
+RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& options,
+                       RunResult& result)
+    : m_casing(casing)
+    , m_options(options)
+    , m_result(result)
+    , m_output_every(c.time.output_every)
+    // Tips moved by a thousand clearances: nothing physical, a blow-up.
+    , m_runaway_gap(1000.0 * (c.casing.radius - c.bladed_disk.tip_radius)) {
+  RunSummary& s = m_result.summary;
+  s.steps_requested = static_cast<int>(std::llround(c.time.duration / c.time.step));
+  s.completed = true;
+  s.status = "completed";
+}
+
+void RunMonitor::add_row(const StepState& state, double energy) {
+  History& h = m_result.history;
+  h.time.push_back(state.time);
+  h.gap.push_back(state.gap);
+  h.lambda.push_back(state.lambda);
+  h.energy.push_back(energy);
+  h.external_work.push_back(state.external_work);
+  h.contact_work.push_back(state.contact_work);
+}
+
+bool RunMonitor::stop(const std::string& status) {
+  m_result.summary.completed = false;
+  m_result.summary.status = status;
+  return false;
+}
+
+void RunMonitor::start(const StepState& state, double initial_energy) {
+  m_result.summary.initial_energy = initial_energy;
+  m_result.summary.max_energy = initial_energy;
+  add_row(state, initial_energy);
+}
+
+bool RunMonitor::after_step(const StepReport& r, const StepState& state,
+                            const std::function<double()>& energy) {
+  RunSummary& s = m_result.summary;
+  s.steps = state.step;
+  s.max_penetration = std::max(s.max_penetration, r.max_penetration);
+  s.min_lambda = std::min(s.min_lambda, r.min_lambda);
+  s.max_lambda = std::max(s.max_lambda, state.lambda.maxCoeff());
+  s.max_complementarity = std::max(s.max_complementarity, r.max_complementarity);
+  s.max_friction_residual = std::max(s.max_friction_residual, r.max_friction_residual);
+  s.sliding_reversals += r.sliding_reversals;
+  s.max_active = std::max(s.max_active, r.n_active);
+  if (s.first_contact_step < 0 && r.n_active > 0) {
+    s.first_contact_step = state.step;
+    const Eigen::VectorXd all = on_all_nodes(m_casing, state.casing);
+    const int n = m_casing.n_elements;
+    m_result.casing_u_at_first_contact =
+        Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<4>>(all.data(), n);
+    m_result.casing_v_at_first_contact =
+        Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<4>>(all.data() + 2, n);
+  }
+  m_largest_external_work = std::max(m_largest_external_work, std::abs(state.external_work));
+
+  const bool contact = state.lambda(0) > 0.0;
+  if (contact) {
+    if (!m_in_contact) s.contact_intervals_blade_1.emplace_back(state.time, state.time);
+    s.contact_intervals_blade_1.back().second = state.time;
+  }
+  m_in_contact = contact;
+
+  // Every step: a blow-up shows first in the gaps; the energy is checked on
+  // the output steps.
+  if (!state.gap.allFinite() || state.gap.cwiseAbs().maxCoeff() > m_runaway_gap) {
+    add_row(state, energy());
+    std::ostringstream message;
+    message << "blow-up: a blade tip gap is non-finite or beyond " << m_runaway_gap
+            << " m (1000 clearances) at step " << state.step << " (t = " << state.time << " s)";
+    return stop(message.str());
+  }
+  if (m_options.progress && state.step % 1000 == 0)
+    m_options.progress(double(state.step) / s.steps_requested);
+  if (state.step % m_output_every != 0 && state.step != s.steps_requested) return true;
+
+  const double e = energy();
+  add_row(state, e);
+  s.max_energy = std::max(s.max_energy, e);
+  s.energy_scale = std::max(
+      {s.energy_scale, std::abs(e), std::abs(state.external_work), std::abs(state.contact_work)});
+  s.energy_balance_error =
+      std::max(s.energy_balance_error,
+               std::abs(e - s.initial_energy - state.external_work - state.contact_work));
+  if (!std::isfinite(e))
+    return stop("blow-up: non-finite energy at step " + std::to_string(state.step) +
+                " (t = " + std::to_string(state.time) + " s)");
+  if (m_largest_external_work > 0.0 && e > m_options.blowup_factor * m_largest_external_work) {
+    std::ostringstream message;
+    message << "blow-up: energy " << e << " J exceeds " << m_options.blowup_factor
+            << " times the largest external work " << m_largest_external_work << " J at step "
+            << state.step << " (t = " << state.time << " s); contact work " << state.contact_work
+            << " J";
+    return stop(message.str());
+  }
+  return true;
+}
+
+void RunMonitor::finish(double integration_seconds, double wall_seconds) {
+  RunSummary& s = m_result.summary;
+  s.integration_seconds = integration_seconds;
+  s.wall_seconds = wall_seconds;
+  if (!m_result.history.external_work.empty()) {
+    s.final_external_work = m_result.history.external_work.back();
+    s.final_contact_work = m_result.history.contact_work.back();
+  }
+}
+
+} // namespace rsi

@@ -1,0 +1,86 @@
+#pragma once
+// Bookkeeping of a contact run, shared by the reference and the reduced
+// solvers (it is neither integrator nor contact code): the stability guard,
+// the summary's maxima over every step, the blade-1 contact intervals, the
+// history rows, the energy balance and the blow-up tests.
+
+#include <functional>
+#include <stdexcept>
+
+#include <Eigen/Core>
+
+#include "case_file.hpp"
+#include "casing.hpp"
+#include "history.hpp"
+
+namespace rsi {
+
+/// Delta t at or above the stability limit 2/omega_max, not forced.
+class StabilityError : public std::invalid_argument {
+public:
+  using std::invalid_argument::invalid_argument;
+};
+
+struct RunOptions {
+  bool force = false; ///< integrate even above the stability limit
+  /// Stop as a blow-up when the energy exceeds this multiple of the largest
+  /// external work done so far (contact can feed energy in, SPEC §3, but a
+  /// hundredfold gain is the sprag instability, not a physical response).
+  double blowup_factor = 100.0;
+  /// Called now and then with the fraction done (for progress display).
+  std::function<void(double)> progress;
+};
+
+struct RunResult {
+  History history;
+  RunSummary summary;
+  /// Casing radial and tangential displacement of every casing node (zeros
+  /// at the clamp) at the first contact (empty without contact), for the
+  /// figure of the casing deformation (paper Fig. 9).
+  Eigen::VectorXd casing_u_at_first_contact;
+  Eigen::VectorXd casing_v_at_first_contact;
+};
+
+/// What a run exposes after each step.
+struct StepState {
+  int step = 0;    ///< n + 1
+  double time = 0; ///< t_{n+1}
+  const Eigen::VectorXd& gap;
+  const Eigen::VectorXd& lambda;
+  double external_work = 0.0;
+  double contact_work = 0.0;
+  Eigen::Ref<const Eigen::VectorXd> casing; ///< casing dofs at t_{n+1}
+};
+
+/// Throws StabilityError unless dt < 2 / omega_max or forced; fills the
+/// summary's dt, omega_max and critical_dt.
+void check_time_step(double dt, double omega_max, bool force, RunSummary& summary);
+
+class RunMonitor {
+public:
+  /// `casing` and `result` must outlive the monitor (not owned).
+  RunMonitor(const Case& c, const Casing& casing, const RunOptions& options, RunResult& result);
+
+  /// The row at t = 0.
+  void start(const StepState& state, double initial_energy);
+  /// Accumulates one step; `energy` is called on output steps only (it
+  /// costs a product with M). Returns false when the run must stop.
+  bool after_step(const StepReport& report, const StepState& state,
+                  const std::function<double()>& energy);
+  /// Closes the summary.
+  void finish(double integration_seconds, double wall_seconds);
+
+private:
+  void add_row(const StepState& state, double energy);
+  bool stop(const std::string& status);
+
+  const Casing& m_casing;
+  const RunOptions& m_options;
+  RunResult& m_result;
+  int m_output_every;
+  double m_runaway_gap;
+  double m_largest_external_work = 0.0;
+  bool m_in_contact = false;
+};
+
+} // namespace rsi
