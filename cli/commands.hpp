@@ -34,13 +34,23 @@ struct CalibrateOptions {
 struct SimulateOptions {
   std::string case_path;
   std::string method = "full";
+  int modes = 0;
   std::string out = "out/simulate";
   bool force = false;
+  bool full_field = false;
+};
+
+struct ReduceOptions {
+  std::string case_path;
+  std::string method;
+  int modes = 0;
+  std::string out = "out/reduce";
 };
 
 int run_modes(const ModesOptions& options);
 int run_export(const ExportOptions& options);
 int run_calibrate(const CalibrateOptions& options);
 int run_simulate(const SimulateOptions& options);
+int run_reduce(const ReduceOptions& options);
 
 } // namespace rsi

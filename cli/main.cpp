@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
+#include "reduced_integrator.hpp"
 #include "reference_run.hpp"
 
 int main(int argc, char** argv) {
@@ -45,10 +46,25 @@ int main(int argc, char** argv) {
   CLI::App* simulate_cmd = app.add_subcommand(
       "simulate", "One contact run -> DIR/history.csv, DIR/summary.json (exit 3 on blow-up)");
   simulate_cmd->add_option("case", simulate.case_path, "case file (JSON)")->required();
-  simulate_cmd->add_option("--method", simulate.method, "full (reference)")->capture_default_str();
+  simulate_cmd->add_option("--method", simulate.method, "full (reference), cb, ccm or guyan")
+      ->capture_default_str();
+  simulate_cmd->add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
+      ->capture_default_str();
+  simulate_cmd->add_flag(
+      "--full-field", simulate.full_field,
+      "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
   simulate_cmd->add_option("--out", simulate.out, "output directory")->capture_default_str();
   simulate_cmd->add_flag("--force", simulate.force,
                          "integrate even with a time step above the stability limit");
+
+  rsi::ReduceOptions reduce;
+  CLI::App* reduce_cmd = app.add_subcommand(
+      "reduce", "Reduction basis of the bladed disk -> DIR/{K.mtx,M.mtx,T.mtx,basis.json}");
+  reduce_cmd->add_option("case", reduce.case_path, "case file (JSON)")->required();
+  reduce_cmd->add_option("--method", reduce.method, "cb, ccm or guyan")->required();
+  reduce_cmd->add_option("--modes", reduce.modes, "fixed-interface (cb) or free (ccm) modes")
+      ->capture_default_str();
+  reduce_cmd->add_option("--out", reduce.out, "output directory")->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -69,6 +85,7 @@ int main(int argc, char** argv) {
     if (*export_cmd) return rsi::run_export(export_options);
     if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
     if (*simulate_cmd) return rsi::run_simulate(simulate);
+    if (*reduce_cmd) return rsi::run_reduce(reduce);
   } catch (const rsi::CaseError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;
@@ -78,6 +95,12 @@ int main(int argc, char** argv) {
   } catch (const rsi::OutputError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;
+  } catch (const rsi::ReductionError& e) {
+    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+    return 2;
+  } catch (const rsi::ReducedIntegrationError& e) {
+    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+    return 3;
   } catch (const rsi::StabilityError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;

@@ -47,15 +47,28 @@ void write_text_file(const std::string& path, const std::string& content) {
   commit(temporary, path);
 }
 
-void write_symmetric_matrix_market(const std::string& path,
-                                   const Eigen::SparseMatrix<double>& matrix) {
+namespace {
+
+void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix,
+                         int symmetry) {
   const std::string temporary = temporary_name(path);
-  const Eigen::SparseMatrix<double> lower = matrix.triangularView<Eigen::Lower>();
-  if (!Eigen::saveMarket(lower, temporary, Eigen::Symmetric)) {
+  if (!Eigen::saveMarket(matrix, temporary, symmetry)) {
     std::filesystem::remove(temporary);
     throw OutputError(path + ": cannot write");
   }
   commit(temporary, path);
+}
+
+} // namespace
+
+void write_symmetric_matrix_market(const std::string& path,
+                                   const Eigen::SparseMatrix<double>& matrix) {
+  write_matrix_market(path, matrix.triangularView<Eigen::Lower>(), Eigen::Symmetric);
+}
+
+void write_general_matrix_market(const std::string& path,
+                                 const Eigen::SparseMatrix<double>& matrix) {
+  write_matrix_market(path, matrix, 0);
 }
 
 } // namespace rsi

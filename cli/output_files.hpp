@@ -25,4 +25,8 @@ void write_text_file(const std::string& path, const std::string& content);
 void write_symmetric_matrix_market(const std::string& path,
                                    const Eigen::SparseMatrix<double>& matrix);
 
+/// Matrix Market coordinate real general, 17 significant digits.
+void write_general_matrix_market(const std::string& path,
+                                 const Eigen::SparseMatrix<double>& matrix);
+
 } // namespace rsi

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "output_files.hpp"
+#include "reduced_run.hpp"
 #include "reference_run.hpp"
 #include "run_outputs.hpp"
 
@@ -23,30 +24,60 @@ std::function<void(double)> terminal_progress() {
   };
 }
 
+/// One row per history row: t, then every bladed-disk dof (u = T q).
+std::string field_csv(const History& history, const Eigen::MatrixXd& field) {
+  std::string out = "t";
+  for (int i = 0; i < field.cols(); ++i)
+    out += ",u_" + std::to_string(i);
+  out += "\n";
+  char buffer[32];
+  for (int r = 0; r < field.rows(); ++r) {
+    std::snprintf(buffer, sizeof buffer, "%.17g", history.time[r]);
+    out += buffer;
+    for (int i = 0; i < field.cols(); ++i) {
+      std::snprintf(buffer, sizeof buffer, ",%.17g", field(r, i));
+      out += buffer;
+    }
+    out += "\n";
+  }
+  return out;
+}
+
 } // namespace
 
 int run_simulate(const SimulateOptions& options) {
   const Case c = load_case(options.case_path);
-  if (options.method != "full")
+  const bool full = options.method == "full";
+  if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")
+    throw UsageError("--method: must be full, cb, ccm or guyan, got '" + options.method + "'");
+  if (full && options.full_field)
     throw UsageError(
-        "--method: must be full (cb, ccm and guyan come with the reduced solver), got '" +
-        options.method + "'");
+        "--full-field: only for the reduced methods (the full run has every dof already)");
   make_output_directory(options.out, "--out");
-  RunOptions run;
-  run.force = options.force;
-  run.progress = terminal_progress();
-  const RunResult result = run_reference(c, run);
-  if (run.progress) std::fprintf(stderr, "\n");
+  ReducedRunOptions run;
+  run.run.force = options.force;
+  run.run.progress = terminal_progress();
+  run.full_field = options.full_field;
+  ReducedRunResult reduced;
+  const RunResult result = full
+                               ? run_reference(c, run.run)
+                               : (reduced = run_reduced(c, options.method, options.modes, run)).run;
+  if (run.run.progress) std::fprintf(stderr, "\n");
   write_text_file(options.out + "/history.csv", history_csv(result.history));
   write_text_file(options.out + "/summary.json", summary_json(result.summary));
   if (result.casing_u_at_first_contact.size() > 0)
     write_text_file(
         options.out + "/casing_first_contact.csv",
         casing_snapshot_csv(result.casing_u_at_first_contact, result.casing_v_at_first_contact));
+  if (options.full_field)
+    write_text_file(options.out + "/field.csv", field_csv(result.history, reduced.field));
   const RunSummary& s = result.summary;
-  std::printf("%s: method %s, %d dofs, %d of %d steps in %.3f s (integration %.3f s)\n",
-              c.source.c_str(), s.method.c_str(), s.n_dofs, s.steps, s.steps_requested,
-              s.wall_seconds, s.integration_seconds);
+  std::printf("%s: method %s%s, %d dofs, %d of %d steps in %.3f s (integration %.3f s)\n",
+              c.source.c_str(), s.method.c_str(),
+              full ? "" : (" " + std::to_string(options.modes) + " modes").c_str(), s.n_dofs,
+              s.steps, s.steps_requested, s.wall_seconds, s.integration_seconds);
+  std::printf("omega_max %.6e rad/s, critical step %.6e s, step %.3e s\n", s.omega_max,
+              s.critical_dt, s.dt);
   std::printf("status: %s\n", s.status.c_str());
   std::printf(
       "max penetration %.3e m, min lambda %.3e N, max lambda %.3e N, max |lambda g| %.3e N m, "

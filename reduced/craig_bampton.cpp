@@ -21,7 +21,8 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(p.n(), eta + p.n_boundary());
   if (eta > 0) {
     const Modes fixed = lowest_modes(sparse_block(stiffness, p.interior, p.interior),
-                                     sparse_block(mass, p.interior, p.interior), eta);
+                                     sparse_block(mass, p.interior, p.interior), eta,
+                                     few_modes(eta, p.n_interior()));
     t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
   }
   t.rightCols(p.n_boundary()) =

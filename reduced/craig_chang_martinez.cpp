@@ -39,7 +39,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     throw ReductionError("Craig-Chang-Martinez: CHOLMOD solve failed");
   Eigen::MatrixXd phi1;
   if (psi > 0) {
-    const Modes free = lowest_modes(stiffness, mass, psi);
+    const Modes free = lowest_modes(stiffness, mass, psi, few_modes(psi, n));
     phi1 = free.shapes;
     r -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
          take_rows(phi1, p.boundary).transpose();

@@ -8,6 +8,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "modal_analysis.hpp"
+
 namespace rsi {
 
 struct Partition {
@@ -33,5 +35,11 @@ Eigen::MatrixXd place_rows(int n, const std::vector<int>& rows,
 
 /// Gather: the rows `rows` of `a`.
 Eigen::MatrixXd take_rows(const Eigen::Ref<const Eigen::MatrixXd>& a, const std::vector<int>& rows);
+
+/// Lanczos (sparse) for a few modes, the dense solver when many are asked
+/// (a quarter of the dofs or more, where Lanczos gains nothing).
+inline ModalSolver few_modes(int count, int n) {
+  return 4 * count < n ? ModalSolver::sparse : ModalSolver::dense;
+}
 
 } // namespace rsi

@@ -73,10 +73,13 @@ public:
 
   /// An optional free-text note (how a calibrated value was found).
   void optional_note(const std::string& key) {
-    m_seen.insert(key);
+    claim(key);
     if (m_object.contains(key) && !m_object.at(key).is_string())
       fail(full(key), "must be a string (a note), got " + m_object.at(key).dump());
   }
+
+  /// Marks a key as known; the caller reads and checks it itself.
+  void claim(const std::string& key) { m_seen.insert(key); }
 
   ObjectReader object(const std::string& key) {
     return ObjectReader(get(key), full(key), m_source);
@@ -187,6 +190,33 @@ Case parse_case(const json& document, const std::string& source) {
   c.time.output_every = time.integer("output_every", 1, 100000000);
   time.finish();
 
+  // Optional: "campaign": [{"method": "cb", "modes": [0, 10]}, ...].
+  top.claim("campaign");
+  if (document.contains("campaign")) {
+    const json& list = document.at("campaign");
+    if (!list.is_array())
+      top.fail("campaign", "must be an array of {\"method\", \"modes\"} objects");
+    for (size_t i = 0; i < list.size(); ++i) {
+      const std::string path = "campaign[" + std::to_string(i) + "]";
+      ObjectReader entry(list[i], path, source);
+      entry.claim("method");
+      entry.claim("modes");
+      const json& method = list[i].contains("method") ? list[i].at("method") : json();
+      if (!method.is_string() || (method != "cb" && method != "ccm" && method != "guyan"))
+        entry.fail(entry.full("method"),
+                   "must be \"cb\", \"ccm\" or \"guyan\", got " + method.dump());
+      const json& modes = list[i].contains("modes") ? list[i].at("modes") : json();
+      if (!modes.is_array() || modes.empty())
+        entry.fail(entry.full("modes"),
+                   "must be a non-empty array of mode counts, got " + modes.dump());
+      for (const json& m : modes) {
+        if (!m.is_number_integer() || m.get<long>() < 0 || m.get<long>() > 100000)
+          entry.fail(entry.full("modes"), "must hold integers in [0, 100000], got " + m.dump());
+        c.campaign.push_back({method.get<std::string>(), m.get<int>()});
+      }
+      entry.finish();
+    }
+  }
   top.finish();
   return c;
 }

@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -72,6 +73,12 @@ struct TimeStepping {
   int output_every = 0;  ///< one history row every this many steps
 };
 
+/// One reduced run of the campaign (SPEC §4 V6): a method and a mode count.
+struct CampaignRun {
+  std::string method; ///< "cb", "ccm" or "guyan"
+  int modes = 0;
+};
+
 struct Case {
   std::string source; ///< where the case was read from, for messages
   Material material;
@@ -80,6 +87,7 @@ struct Case {
   OperatingPoint operating_point;
   Forcing forcing;
   TimeStepping time;
+  std::vector<CampaignRun> campaign; ///< empty when the file has no campaign
 };
 
 /// Validates `document` against the schema of data/README.md.

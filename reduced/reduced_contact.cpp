@@ -1,0 +1,55 @@
+#include "reduced_contact.hpp"
+
+#include <cmath>
+
+#include "ring_element.hpp"
+
+namespace rsi {
+
+ReducedTipContact::ReducedTipContact(const BladedDisk& bladed_disk, const ReducedBasis& basis,
+                                     const Casing& casing, const Case& c)
+    : m_node_first(casing.node_first_dof)
+    , m_tip_radius(c.bladed_disk.tip_radius)
+    , m_casing_radius(casing.radius)
+    , m_omega(c.operating_point.rotation_speed)
+    , m_mu(c.operating_point.friction_coefficient) {
+  // The partition's boundary is bladed_disk.boundary = (u_0, v_0, u_1, v_1, ...).
+  for (int k = 0; k < bladed_disk.n_sectors; ++k) {
+    m_q_u.push_back(basis.boundary_position[2 * k]);
+    m_q_v.push_back(basis.boundary_position[2 * k + 1]);
+    m_alpha0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
+  }
+}
+
+void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_rate,
+                                 const Eigen::VectorXd& c, const Eigen::VectorXd& c_rate, double t,
+                                 std::vector<TipContact>& out) const {
+  const int n_nodes = static_cast<int>(m_node_first.size());
+  const double pitch = 2.0 * M_PI / n_nodes;
+  out.resize(m_q_u.size());
+  for (size_t k = 0; k < m_q_u.size(); ++k) {
+    TipContact& tip = out[k];
+    tip.q_u = m_q_u[k];
+    tip.q_v = m_q_v[k];
+    const double turns = (m_alpha0[k] + m_omega * t + q(tip.q_v) / m_tip_radius) / (2.0 * M_PI);
+    const double position = (turns - std::floor(turns)) * n_nodes; // in [0, n_nodes)
+    const int element = std::min(static_cast<int>(position), n_nodes - 1);
+    const Eigen::Vector4d n = hermite_values(position - element, m_casing_radius * pitch);
+    double u_casing = 0.0;
+    double v_casing_rate = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      const int first = m_node_first[(element + a / 2) % n_nodes];
+      tip.shape[a] = n(a);
+      tip.c_u[a] = first < 0 ? -1 : first + a % 2;
+      tip.c_v[a] = first < 0 ? -1 : first + 2 + a % 2;
+      if (first < 0) continue;
+      u_casing += n(a) * c(tip.c_u[a]);
+      v_casing_rate += n(a) * c_rate(tip.c_v[a]);
+    }
+    tip.gap = m_casing_radius + u_casing - m_tip_radius - q(tip.q_u);
+    tip.sliding = m_omega * (m_tip_radius + q(tip.q_u)) + q_rate(tip.q_v) - v_casing_rate;
+    tip.sign = m_mu > 0.0 ? static_cast<double>((tip.sliding > 0.0) - (tip.sliding < 0.0)) : 0.0;
+  }
+}
+
+} // namespace rsi

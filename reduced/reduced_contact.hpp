@@ -1,0 +1,60 @@
+#pragma once
+// Blade-tip / casing contact seen from the reduced model (SPEC §2-3),
+// written apart from the reference solver's contact code: the tips' u, v
+// are entries of the reduced coordinates q (the boundary kept physical),
+// the casing is full.
+//
+// For tip k at the fixed-frame angle alpha_k = alpha_k0 + Omega t + v_k/R_t,
+// in casing element e at local coordinate xi with Hermite values N(xi):
+//   gap       g_k = R_c + N . (u, u_s)_e - R_t - u_k
+//   sliding   v_slide = Omega (R_t + u_k) + v_k' - N . (v, v_s)_e'
+// The normal row G_k is -e(u_k) on q and +N on the casing (u, u_s)_e; the
+// force row D_k adds mu s_k times (-e(v_k) on q, +N on the casing (v, v_s)_e).
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "bladed_disk.hpp"
+#include "casing.hpp"
+#include "reduced_basis.hpp"
+
+namespace rsi {
+
+/// One tip's contact geometry at a given state.
+struct TipContact {
+  double gap = 0.0;              ///< [m]
+  double sliding = 0.0;          ///< relative tangential velocity [m/s]
+  double sign = 0.0;             ///< sign of `sliding` (0 without friction)
+  int q_u = -1;                  ///< position of the tip's u in q
+  int q_v = -1;                  ///< position of the tip's v in q
+  std::array<int, 4> c_u{};      ///< casing dofs (u1, u1_s, u2, u2_s); -1 at the clamp
+  std::array<int, 4> c_v{};      ///< casing dofs (v1, v1_s, v2, v2_s); -1 at the clamp
+  std::array<double, 4> shape{}; ///< Hermite values N(xi)
+};
+
+class ReducedTipContact {
+public:
+  ReducedTipContact(const BladedDisk& bladed_disk, const ReducedBasis& basis, const Casing& casing,
+                    const Case& c);
+
+  int n_tips() const { return static_cast<int>(m_q_u.size()); }
+  double friction_coefficient() const { return m_mu; }
+
+  /// All tips at reduced state (q, q') and casing state (c, c') at time t.
+  void evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_rate, const Eigen::VectorXd& c,
+                const Eigen::VectorXd& c_rate, double t, std::vector<TipContact>& out) const;
+
+private:
+  std::vector<int> m_q_u;
+  std::vector<int> m_q_v;
+  std::vector<double> m_alpha0;
+  std::vector<int> m_node_first; ///< casing dof of node j's u, or -1
+  double m_tip_radius;
+  double m_casing_radius;
+  double m_omega;
+  double m_mu;
+};
+
+} // namespace rsi

@@ -1,0 +1,91 @@
+#include "reduced_run.hpp"
+
+#include <chrono>
+
+#include <Eigen/Eigenvalues>
+
+#include "bladed_disk.hpp"
+#include "casing.hpp"
+#include "casing_forcing.hpp"
+#include "modal_analysis.hpp"
+#include "reduced_contact.hpp"
+#include "reduced_integrator.hpp"
+#include "reduction.hpp"
+
+namespace rsi {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+} // namespace
+
+double reduced_omega_max(const ReducedBasis& basis) {
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness, basis.mass,
+                                                                        Eigen::EigenvaluesOnly);
+  if (eigen.info() != Eigen::Success)
+    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed");
+  return std::sqrt(std::max(eigen.eigenvalues().maxCoeff(), 0.0));
+}
+
+ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
+                             const ReducedRunOptions& options) {
+  return run_reduced(c, reduce_bladed_disk(assemble_bladed_disk(c), method, modes), options);
+}
+
+ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
+                             const ReducedRunOptions& options) {
+  const Clock::time_point start = Clock::now();
+  const BladedDisk bd = assemble_bladed_disk(c);
+  const Casing casing = assemble_casing(c);
+  ReducedRunResult out;
+  out.basis = basis;
+  RunResult& result = out.run;
+  RunSummary& s = result.summary;
+  s.method = basis.method;
+  s.n_dofs = out.basis.n_reduced() + casing.n_dofs();
+  check_time_step(
+      c.time.step,
+      std::max(reduced_omega_max(out.basis), max_angular_frequency(casing.stiffness, casing.mass)),
+      options.run.force, s);
+
+  const ReducedTipContact contact(bd, out.basis, casing, c);
+  ReducedIntegrator integrator(out.basis, casing, c.time.step, contact);
+  const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
+  const Eigen::VectorXd no_force = Eigen::VectorXd::Zero(casing.n_dofs());
+
+  RunMonitor monitor(c, casing, options.run, result);
+  std::vector<Eigen::VectorXd> field;
+  auto state = [&]() {
+    return StepState{integrator.step_index(), integrator.time(),          integrator.gap(),
+                     integrator.lambda(),     integrator.external_work(), integrator.contact_work(),
+                     integrator.casing()};
+  };
+  auto record_field = [&]() {
+    if (options.full_field) field.push_back(out.basis.transformation * integrator.q());
+  };
+  const Clock::time_point integration_start = Clock::now();
+  integrator.start(forcing_active(c.forcing, 0.0, s.dt) ? forcing : no_force);
+  monitor.start(state(), integrator.initial_energy());
+  record_field();
+  for (int n = 0; n < s.steps_requested; ++n) {
+    const StepReport r =
+        integrator.step(forcing_active(c.forcing, n * s.dt, s.dt) ? forcing : no_force);
+    const int rows = result.history.n_rows();
+    const bool go_on = monitor.after_step(r, state(), [&]() { return integrator.energy(); });
+    if (result.history.n_rows() > rows) record_field();
+    if (!go_on) break;
+  }
+  monitor.finish(seconds_since(integration_start), seconds_since(start));
+  if (options.full_field) {
+    out.field.resize(static_cast<Eigen::Index>(field.size()), bd.n_dofs());
+    for (size_t i = 0; i < field.size(); ++i)
+      out.field.row(static_cast<Eigen::Index>(i)) = field[i].transpose();
+  }
+  return out;
+}
+
+} // namespace rsi

@@ -1,0 +1,42 @@
+#pragma once
+// A contact run of the reduced bladed disk (CB, CCM or Guyan) with the full
+// casing (SPEC §3): same outputs as the reference run.
+
+#include <string>
+
+#include <Eigen/Core>
+
+#include "case_file.hpp"
+#include "reduced_basis.hpp"
+#include "run_monitor.hpp"
+
+namespace rsi {
+
+struct ReducedRunOptions {
+  RunOptions run;
+  /// Recover the physical displacement u = T q of every bladed-disk dof on
+  /// each output step (for stresses and animations).
+  bool full_field = false;
+};
+
+struct ReducedRunResult {
+  RunResult run;
+  ReducedBasis basis;
+  /// Row i: the bladed-disk dofs at history row i (empty unless asked).
+  Eigen::MatrixXd field;
+};
+
+/// Throws ReductionError (method, mode count, R_B), StabilityError (dt at
+/// or above the reduced model's 2/omega_max, not forced) or
+/// ReducedIntegrationError. A blow-up stops the run (summary.completed false).
+ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
+                             const ReducedRunOptions& options);
+
+/// The same with a basis built (or altered) by the caller.
+ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
+                             const ReducedRunOptions& options);
+
+/// omega_max of the reduced bladed disk (dense generalized eigenproblem).
+double reduced_omega_max(const ReducedBasis& basis);
+
+} // namespace rsi
