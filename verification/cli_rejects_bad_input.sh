@@ -62,7 +62,11 @@ expect 2 "case is required" -- "$rsi" modes
 expect 2 "cannot create the output directory" -- "$rsi" modes "$good" --out /proc/rsi-cannot-write-here
 expect 2 "a subcommand is required" -- "$rsi"
 expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
-expect 2 "--method: must be full" -- "$rsi" simulate "$good" --method modal --out "$work/out"
+expect 2 "--method: must be full, cb, ccm or guyan" -- "$rsi" simulate "$good" --method modal --out "$work/out"
+expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" reduce "$good" --method cb --modes 639 --out "$work/out"
+expect 2 "--modes: Craig-Chang-Martinez takes 0 to 638" -- "$rsi" simulate "$good" --method ccm --modes 700 --out "$work/out"
+expect 2 "--modes: Guyan reduction keeps no modes" -- "$rsi" reduce "$good" --method guyan --modes 3 --out "$work/out"
+expect 2 "--method: must be full, cb, ccm or guyan" -- "$rsi" reduce "$good" --method mac --out "$work/out"
 expect 0 "--count" -- "$rsi" modes --help
 
 echo "$passes passed, $failures failed"
