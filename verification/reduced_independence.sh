@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# SPEC §1: reduced/ never uses the reference solver's time integrator or
+# contact code. Fails if any file of reduced/ includes their headers.
+# Usage: reduced_independence.sh SOURCE_DIR
+set -u
+forbidden='#include "(central_difference|tip_casing_contact|contact_law|reference_run)\.hpp"'
+if hits=$(grep -rnE "$forbidden" "$1/reduced"); then
+  echo "reduced/ includes reference integrator or contact code:"
+  echo "$hits"
+  echo "0 passed, 1 failed"
+  exit 1
+fi
+echo "ok   reduced/ includes none of central_difference, tip_casing_contact, contact_law, reference_run"
+echo "1 passed, 0 failed"
