@@ -47,10 +47,18 @@ struct ReduceOptions {
   std::string out = "out/reduce";
 };
 
+struct CampaignOptions {
+  std::string case_path;
+  std::string out = "out/campaign";
+  int jobs = 2;
+  double target_e2 = 0.0; ///< report the smallest eta, psi reaching it (0: no)
+};
+
 int run_modes(const ModesOptions& options);
 int run_export(const ExportOptions& options);
 int run_calibrate(const CalibrateOptions& options);
 int run_simulate(const SimulateOptions& options);
 int run_reduce(const ReduceOptions& options);
+int run_campaign(const CampaignOptions& options);
 
 } // namespace rsi

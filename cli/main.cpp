@@ -66,6 +66,17 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   reduce_cmd->add_option("--out", reduce.out, "output directory")->capture_default_str();
 
+  rsi::CampaignOptions campaign;
+  CLI::App* campaign_cmd = app.add_subcommand(
+      "campaign",
+      "Reference + every reduced run of the case's campaign -> DIR/convergence.csv, DIR/runs/*/");
+  campaign_cmd->add_option("case", campaign.case_path, "case file (JSON)")->required();
+  campaign_cmd->add_option("--out", campaign.out, "output directory")->capture_default_str();
+  campaign_cmd->add_option("--jobs", campaign.jobs, "runs in parallel (threads), 1..64")
+      ->capture_default_str();
+  campaign_cmd->add_option("--target-e2", campaign.target_e2,
+                           "report the smallest eta and psi of the campaign with e2 at most this");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -86,6 +97,7 @@ int main(int argc, char** argv) {
     if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
     if (*simulate_cmd) return rsi::run_simulate(simulate);
     if (*reduce_cmd) return rsi::run_reduce(reduce);
+    if (*campaign_cmd) return rsi::run_campaign(campaign);
   } catch (const rsi::CaseError& e) {
     std::fprintf(stderr, "rsi: error: %s\n", e.what());
     return 2;

@@ -1,0 +1,136 @@
+// rsi campaign: the reference and every reduced run of the case file's
+// campaign, on two threads, with the error norms of SPEC §4 V6.
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "commands.hpp"
+#include "error_norms.hpp"
+#include "output_files.hpp"
+#include "reduced_run.hpp"
+#include "reference_run.hpp"
+#include "run_outputs.hpp"
+
+namespace rsi {
+namespace {
+
+struct CampaignResult {
+  CampaignRun run;
+  RunResult result;
+  std::string error; ///< why the run could not be made (bad mode count, numerical failure)
+};
+
+std::string run_name(const CampaignRun& r) {
+  return r.method + "-" + std::to_string(r.modes);
+}
+
+/// Smallest mode count of `method` whose e2 is at most `target` (-1: none).
+int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector<GapErrors>& errors,
+                      const std::string& method, double target) {
+  int best = -1;
+  for (size_t i = 0; i < runs.size(); ++i)
+    if (runs[i].run.method == method && runs[i].error.empty() && errors[i].e2 <= target &&
+        (best < 0 || runs[i].run.modes < best))
+      best = runs[i].run.modes;
+  return best;
+}
+
+} // namespace
+
+int run_campaign(const CampaignOptions& options) {
+  const Case c = load_case(options.case_path);
+  if (c.campaign.empty())
+    throw UsageError(c.source + ": key 'campaign': missing or empty, nothing to run");
+  if (options.jobs < 1 || options.jobs > 64)
+    throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
+  make_output_directory(options.out, "--out");
+
+  // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.
+  std::vector<CampaignResult> runs(c.campaign.size() + 1);
+  runs[0].run = {"full", 0};
+  for (size_t i = 0; i < c.campaign.size(); ++i)
+    runs[i + 1].run = c.campaign[i];
+  std::atomic<size_t> next{0};
+  std::mutex print;
+  auto worker = [&]() {
+    for (size_t i = next++; i < runs.size(); i = next++) {
+      CampaignResult& r = runs[i];
+      try {
+        r.result = r.run.method == "full" ? run_reference(c, {})
+                                          : run_reduced(c, r.run.method, r.run.modes, {}).run;
+        if (!r.result.summary.completed) r.error = r.result.summary.status;
+      } catch (const std::exception& e) {
+        r.error = e.what();
+      }
+      const std::lock_guard<std::mutex> lock(print);
+      std::fprintf(stderr, "%-10s %s\n", run_name(r.run).c_str(),
+                   r.error.empty()
+                       ? ("done in " + std::to_string(r.result.summary.wall_seconds) + " s").c_str()
+                       : r.error.c_str());
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 0; t < std::min<int>(options.jobs, static_cast<int>(runs.size())); ++t)
+    threads.emplace_back(worker);
+  for (std::thread& t : threads)
+    t.join();
+  if (!runs[0].error.empty())
+    throw std::runtime_error("campaign: the reference run failed: " + runs[0].error);
+
+  const RunResult& reference = runs[0].result;
+  std::vector<GapErrors> errors(runs.size());
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "method,modes,e2,e_inf,wall_s,speedup\n";
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const CampaignResult& r = runs[i];
+    const std::string dir = options.out + "/runs/" + run_name(r.run);
+    if (!r.error.empty()) {
+      std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", run_name(r.run).c_str(),
+                   r.error.c_str());
+      continue;
+    }
+    errors[i] = blade1_gap_errors(r.result.history, reference.history);
+    make_output_directory(dir, "--out");
+    write_text_file(dir + "/history.csv", history_csv(r.result.history));
+    write_text_file(dir + "/summary.json", summary_json(r.result.summary));
+    csv << r.run.method << "," << r.run.modes << "," << errors[i].e2 << "," << errors[i].e_inf
+        << "," << r.result.summary.wall_seconds << ","
+        << reference.summary.wall_seconds / r.result.summary.wall_seconds << "\n";
+  }
+  write_text_file(options.out + "/convergence.csv", csv.str());
+
+  std::printf("%-6s %6s %10s %10s %9s %8s\n", "method", "modes", "e2", "e_inf", "wall_s",
+              "speedup");
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i].error.empty()) continue;
+    std::printf("%-6s %6d %10.4e %10.4e %9.3f %8.2f\n", runs[i].run.method.c_str(),
+                runs[i].run.modes, errors[i].e2, errors[i].e_inf,
+                runs[i].result.summary.wall_seconds,
+                reference.summary.wall_seconds / runs[i].result.summary.wall_seconds);
+  }
+  if (options.target_e2 > 0.0) {
+    for (const char* method : {"cb", "ccm"}) {
+      const int modes = smallest_reaching(runs, errors, method, options.target_e2);
+      if (modes < 0)
+        std::printf(
+            "target e2 <= %g: no %s run of the campaign reaches it; add larger mode counts\n",
+            options.target_e2, method);
+      else
+        std::printf("target e2 <= %g: %s needs %d modes (smallest in the campaign)\n",
+                    options.target_e2, method, modes);
+    }
+  }
+  std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
+              options.out.c_str(), options.out.c_str());
+  const bool all_ok = std::all_of(runs.begin(), runs.end(),
+                                  [](const CampaignResult& r) { return r.error.empty(); });
+  return all_ok ? 0 : 3;
+}
+
+} // namespace rsi
