@@ -27,22 +27,34 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   basis.method = "ccm";
   basis.n_modes = psi;
 
-  // R(:, B) = K^-1 E_B - Phi_1 Omega_1^-1 Phi_1B^T (eq. 14, boundary columns only).
-  Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> factor(stiffness);
-  if (factor.info() != Eigen::Success)
-    throw ReductionError(
-        "Craig-Chang-Martinez: K is not positive definite (CHOLMOD): the residual flexibility "
-        "needs a supported part (is the hub clamped?)");
-  const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
-  Eigen::MatrixXd r = factor.solve(unit);
-  if (factor.info() != Eigen::Success)
-    throw ReductionError("Craig-Chang-Martinez: CHOLMOD solve failed");
+  // R(:, B), boundary columns only. With few free modes (Lanczos): eq. 14,
+  // K^-1 E_B - Phi_1 Omega_1^-1 Phi_1B^T. With many, the dense solver has
+  // every mode anyway, and the subtraction would cancel R_B down to its
+  // round-off floor (Bladh et al. 2003): sum over the discarded modes
+  // instead, Phi_2 Omega_2^-1 Phi_2B^T, which is the same R without cancellation.
   Eigen::MatrixXd phi1;
-  if (psi > 0) {
-    const Modes free = lowest_modes(stiffness, mass, psi, few_modes(psi, n));
-    phi1 = free.shapes;
-    r -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
-         take_rows(phi1, p.boundary).transpose();
+  Eigen::MatrixXd r;
+  if (few_modes(psi, n) == ModalSolver::dense) {
+    const Modes all = lowest_modes(stiffness, mass, n, ModalSolver::dense);
+    phi1 = all.shapes.leftCols(psi);
+    const Eigen::MatrixXd phi2 = all.shapes.rightCols(n - psi);
+    r = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
+        take_rows(phi2, p.boundary).transpose();
+  } else {
+    Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> factor(stiffness);
+    if (factor.info() != Eigen::Success)
+      throw ReductionError(
+          "Craig-Chang-Martinez: K is not positive definite (CHOLMOD): the residual flexibility "
+          "needs a supported part (is the hub clamped?)");
+    r = factor.solve(place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)));
+    if (factor.info() != Eigen::Success)
+      throw ReductionError("Craig-Chang-Martinez: CHOLMOD solve failed");
+    if (psi > 0) {
+      const Modes free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
+      phi1 = free.shapes;
+      r -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
+           take_rows(phi1, p.boundary).transpose();
+    }
   }
   const Eigen::MatrixXd r_b = take_rows(r, p.boundary);
 

@@ -107,10 +107,7 @@ struct Model {
   Partition p;
   Eigen::MatrixXd k, m;                     ///< dense K, M
   Eigen::SparseMatrix<double> k_abs, m_abs; ///< |K|, |M|
-  DenseEigen full;                          ///< every mode of the bladed disk, dsygvd
-  Eigen::VectorXd full_bound;               ///< solve_bounds of `full`
   double k_norm = 0.0, m_norm = 0.0;
-  double cond_k = 0.0;               ///< 2-norm condition number of K
   Eigen::LLT<Eigen::MatrixXd> k_llt; ///< dense Cholesky of K (static reference)
 
   int n() const { return bd.n_dofs(); }
@@ -135,27 +132,39 @@ protected:
     model->m = Eigen::MatrixXd(model->bd.mass);
     model->k_abs = model->bd.stiffness.cwiseAbs();
     model->m_abs = model->bd.mass.cwiseAbs();
-    model->full = dense_eigen(model->k, model->m);
     model->k_norm = norm_inf(model->k);
     model->m_norm = norm_inf(model->m);
-    model->full_bound = solve_bounds(model->full, model->k_norm, model->m_norm);
-    const std::pair<double, double> ek = extreme_eigenvalues(model->k);
-    model->cond_k = ek.second / ek.first;
     model->k_llt.compute(model->k);
     ASSERT_EQ(model->k_llt.info(), Eigen::Success) << "dense Cholesky of K";
-    std::printf("bladed disk: n = %d, n_B = %d, ||K||_inf = %.3e, ||M||_inf = %.3e, "
-                "cond_2(K) = %.3e, omega_1^2 = %.6e, omega_max^2 = %.6e\n",
-                model->n(), model->p.n_boundary(), model->k_norm, model->m_norm, model->cond_k,
-                model->full.values(0), model->full.values(model->n() - 1));
+    std::printf("bladed disk: n = %d, n_B = %d, ||K||_inf = %.3e, ||M||_inf = %.3e\n", model->n(),
+                model->p.n_boundary(), model->k_norm, model->m_norm);
     s_model = std::move(model);
     s_bases = std::make_unique<std::map<std::pair<std::string, int>, ReducedBasis>>();
   }
   static void TearDownTestSuite() {
     s_bases.reset();
+    s_full.reset();
     s_model.reset();
   }
 
   static const Model& model() { return *s_model; }
+
+  /// Every mode of the bladed disk (dsygvd), computed on first use (~0.7 s).
+  static const DenseEigen& full() {
+    if (!s_full) {
+      const Model& md = model();
+      s_full = std::make_unique<DenseEigen>(dense_eigen(md.k, md.m));
+      s_full_bound = solve_bounds(*s_full, md.k_norm, md.m_norm);
+      std::printf("full model: omega_1^2 = %.6e, omega_max^2 = %.6e rad^2/s^2\n", s_full->values(0),
+                  s_full->values(md.n() - 1));
+    }
+    return *s_full;
+  }
+  /// solve_bounds of full().
+  static const Eigen::VectorXd& full_bound() {
+    full();
+    return s_full_bound;
+  }
 
   /// reduce_bladed_disk, built once per (method, modes) for the whole suite.
   static const ReducedBasis& basis(const std::string& method, int modes) {
@@ -182,9 +191,13 @@ protected:
   }
 
   static std::unique_ptr<Model> s_model;
+  static std::unique_ptr<DenseEigen> s_full;
+  static Eigen::VectorXd s_full_bound;
   static std::unique_ptr<std::map<std::pair<std::string, int>, ReducedBasis>> s_bases;
 };
 std::unique_ptr<Model> ReductionBases::s_model;
+std::unique_ptr<DenseEigen> ReductionBases::s_full;
+Eigen::VectorXd ReductionBases::s_full_bound;
 std::unique_ptr<std::map<std::pair<std::string, int>, ReducedBasis>> ReductionBases::s_bases;
 
 // ---------------------------------------------------------------- V3
@@ -292,12 +305,12 @@ TEST_F(ReductionBases, CraigChangMartinezFreeModesOrthonormal) {
         m_ratio = std::max(m_ratio, dm / (n * eps * md.m_norm * cross));
         if (i != j) {
           const double bound =
-              n * eps * md.k_norm * cross + lanczos_tol * lanczos_tol * md.full.values(n - 1);
+              n * eps * md.k_norm * cross + lanczos_tol * lanczos_tol * full().values(n - 1);
           off_ratio = std::max(off_ratio, std::abs(kk(i, j)) / bound);
         } else {
-          const double w2 = md.full.values(i);
+          const double w2 = full().values(i);
           const double bound =
-              md.full_bound(i) + n * eps * (md.k_norm + w2 * md.m_norm) * cross + lanczos_tol * w2;
+              full_bound()(i) + n * eps * (md.k_norm + w2 * md.m_norm) * cross + lanczos_tol * w2;
           diag_err = std::max(diag_err, std::abs(kk(i, i) - w2) / w2);
           diag_ratio = std::max(diag_ratio, std::abs(kk(i, i) - w2) / bound);
         }
@@ -427,6 +440,9 @@ TEST_F(ReductionBases, StaticTipLoadsExact) {
     f_b(i) = 1000.0 * uniform(generator); // [N]
   const Eigen::VectorXd f = place_rows(n, md.p.boundary, f_b);
   const Eigen::VectorXd u = md.k_llt.solve(f);
+  const std::pair<double, double> ek = extreme_eigenvalues(md.k);
+  const double cond_k = ek.second / ek.first;
+  std::printf("cond_2(K) = %.3e\n", cond_k);
   for (const char* method : {"cb", "ccm"})
     for (int modes : {0, 10, 44, 88}) {
       const ReducedBasis& b = basis(method, modes);
@@ -436,7 +452,7 @@ TEST_F(ReductionBases, StaticTipLoadsExact) {
       const Eigen::VectorXd q = llt.solve(b.transformation.transpose() * f);
       const Eigen::VectorXd u_red = b.transformation * q;
       const double err = (u_red - u).norm() / u.norm();
-      const double bound = 2.0 * n * eps * md.cond_k + nb * eps * b.cond_rb;
+      const double bound = 2.0 * n * eps * cond_k + nb * eps * b.cond_rb;
       std::printf("static tip load, %s %d: ||T q - K^-1 f|| / ||K^-1 f|| = %.3e (bound %.3e); "
                   "tip dofs alone %.3e\n",
                   method, modes, err, bound,
@@ -457,13 +473,13 @@ TEST_F(ReductionBases, AllFixedInterfaceModesReproduceFullEigenvalues) {
   const ReducedEigen red = reduced_eigen(b);
   double worst = 0.0, worst_ratio = 0.0;
   for (int i = 0; i < 50; ++i) {
-    const double err = std::abs(red.eig.values(i) - md.full.values(i));
-    worst = std::max(worst, err / md.full.values(i));
-    worst_ratio = std::max(worst_ratio, err / (red.bound(i) + md.full_bound(i)));
+    const double err = std::abs(red.eig.values(i) - full().values(i));
+    worst = std::max(worst, err / full().values(i));
+    worst_ratio = std::max(worst_ratio, err / (red.bound(i) + full_bound()(i)));
   }
   std::printf("CB(%d), lowest 50 eigenvalues vs full: max relative error %.3e (%.2e of bound; "
               "bound for omega_1^2 relative %.3e)\n",
-              n_i, worst, worst_ratio, (red.bound(0) + md.full_bound(0)) / md.full.values(0));
+              n_i, worst, worst_ratio, (red.bound(0) + full_bound()(0)) / full().values(0));
   EXPECT_LE(worst_ratio, 1.0);
 }
 
@@ -485,16 +501,16 @@ TEST_F(ReductionBases, ReducedEigenvaluesBoundFullAndDecrease) {
       const int r = b.n_reduced();
       double below = 0.0, below_ratio = 0.0;
       for (int i = 0; i < r; ++i) {
-        const double shortfall = md.full.values(i) - red.eig.values(i);
-        below = std::max(below, shortfall / md.full.values(i));
-        below_ratio = std::max(below_ratio, shortfall / (red.bound(i) + md.full_bound(i)));
+        const double shortfall = full().values(i) - red.eig.values(i);
+        below = std::max(below, shortfall / full().values(i));
+        below_ratio = std::max(below_ratio, shortfall / (red.bound(i) + full_bound()(i)));
       }
       double rel_err = 0.0;
       for (int i = 0; i < lowest; ++i)
         rel_err =
-            std::max(rel_err, std::abs(red.eig.values(i) - md.full.values(i)) / md.full.values(i));
-      const double top_excess = red.eig.values(r - 1) - md.full.values(n - 1);
-      const double top_ratio = top_excess / (red.bound(r - 1) + md.full_bound(n - 1));
+            std::max(rel_err, std::abs(red.eig.values(i) - full().values(i)) / full().values(i));
+      const double top_excess = red.eig.values(r - 1) - full().values(n - 1);
+      const double top_ratio = top_excess / (red.bound(r - 1) + full_bound()(n - 1));
       double rise = -std::numeric_limits<double>::infinity();
       double rise_ratio = rise;
       if (previous.size() > 0) {
@@ -508,7 +524,7 @@ TEST_F(ReductionBases, ReducedEigenvaluesBoundFullAndDecrease) {
                   "full %.3e (%.2e of bound); omega_max = %.6e vs full %.6e rad/s; rise vs "
                   "previous %.3e (%.2e of bound)\n",
                   method, modes, r, lowest, rel_err, below, below_ratio,
-                  std::sqrt(red.eig.values(r - 1)), std::sqrt(md.full.values(n - 1)),
+                  std::sqrt(red.eig.values(r - 1)), std::sqrt(full().values(n - 1)),
                   previous.size() > 0 ? rise : 0.0, previous.size() > 0 ? rise_ratio : 0.0);
       EXPECT_LE(below_ratio, 1.0) << method << " " << modes << ": below the full eigenvalues";
       EXPECT_LE(top_ratio, 1.0) << method << " " << modes << ": omega_max above the full one";
@@ -537,11 +553,11 @@ Eigen::MatrixXd residual_flexibility_tail(const DenseEigen& all, const std::vect
 /// arithmetic. CCM's R = K^-1 - Phi_1 Omega_1^-1 Phi_1^T (eq. 14) differs
 /// from the tail sum by exactly E at every psi, so ||E||_2 (dense Cholesky
 /// and dsygvd) is the round-off floor of R_B evaluated by subtraction.
-double subtraction_floor(const Model& md, const std::vector<int>& boundary) {
+double subtraction_floor(const Model& md, const DenseEigen& all, const std::vector<int>& boundary) {
   const int nb = static_cast<int>(boundary.size());
   const Eigen::MatrixXd k_inv_b = take_rows(
       md.k_llt.solve(place_rows(md.n(), boundary, Eigen::MatrixXd::Identity(nb, nb))), boundary);
-  return norm2(k_inv_b - residual_flexibility_tail(md.full, boundary, 0));
+  return norm2(k_inv_b - residual_flexibility_tail(all, boundary, 0));
 }
 
 /// Relative change of cond(R_B) when every eigenvalue moves by at most delta
@@ -555,12 +571,12 @@ double cond_tolerance(double lambda_min, double lambda_max, double delta) {
 // 2 ||E|| (the tail sum and CCM's own evaluation, each within the floor).
 TEST_F(ReductionBases, DefaultBoundaryCondRbReported) {
   const Model& md = model();
-  const double floor = subtraction_floor(md, md.p.boundary);
+  const double floor = subtraction_floor(md, full(), md.p.boundary);
   std::printf("tip u, v boundary: round-off floor of R_B ||E||_2 = %.3e\n", floor);
   for (int psi : {0, 10, 44, 88}) {
     const ReducedBasis& b = basis("ccm", psi);
     const std::pair<double, double> e =
-        extreme_eigenvalues(residual_flexibility_tail(md.full, md.p.boundary, psi));
+        extreme_eigenvalues(residual_flexibility_tail(full(), md.p.boundary, psi));
     const double exact = e.second / e.first;
     const double tol = cond_tolerance(e.first, e.second, 2.0 * floor);
     const double rel = std::abs(b.cond_rb - exact) / exact;
@@ -606,8 +622,8 @@ TEST_F(ReductionBases, RotationBoundaryConditioning) {
   const Partition p_theta = make_partition(n, with_theta);
   const int nb = p_theta.n_boundary();
   const double limit = 1.0 / (n * eps);
-  const double floor_uv = subtraction_floor(md, md.p.boundary);
-  const double floor_theta = subtraction_floor(md, with_theta);
+  const double floor_uv = subtraction_floor(md, full(), md.p.boundary);
+  const double floor_theta = subtraction_floor(md, full(), with_theta);
   std::printf("round-off floor of R_B ||E||_2: u, v %.3e, u, v, theta %.3e; refusal limit "
               "1/(n eps) = %.3e\n",
               floor_uv, floor_theta, limit);
@@ -616,9 +632,9 @@ TEST_F(ReductionBases, RotationBoundaryConditioning) {
   std::map<int, double> cond_uv_exact;
   for (int psi : {0, 22, 44, 88, 200, 300, 400, 450, 480, 500, 520, 550, 600}) {
     const std::pair<double, double> uv =
-        extreme_eigenvalues(residual_flexibility_tail(md.full, md.p.boundary, psi));
+        extreme_eigenvalues(residual_flexibility_tail(full(), md.p.boundary, psi));
     const std::pair<double, double> th =
-        extreme_eigenvalues(residual_flexibility_tail(md.full, with_theta, psi));
+        extreme_eigenvalues(residual_flexibility_tail(full(), with_theta, psi));
     theta_eig[psi] = th;
     const double cond_uv = uv.second / uv.first;
     cond_uv_exact[psi] = cond_uv;
@@ -675,7 +691,7 @@ TEST_F(ReductionBases, RotationBoundaryConditioning) {
                              Probe{"u,v,theta", &p_theta, &with_theta, 500, floor_theta},
                              Probe{"u,v", &md.p, &md.p.boundary, 550, floor_uv}}) {
     const std::pair<double, double> e =
-        extreme_eigenvalues(residual_flexibility_tail(md.full, *probe.boundary, probe.psi));
+        extreme_eigenvalues(residual_flexibility_tail(full(), *probe.boundary, probe.psi));
     ASSERT_LT(e.first, 2.0 * probe.floor);
     ASSERT_LT(e.second / e.first, limit);
     std::printf("CCM %s psi = %d (exact cond %.3e, lambda_min %.3e < floor 2||E|| = %.3e): ",
@@ -686,11 +702,10 @@ TEST_F(ReductionBases, RotationBoundaryConditioning) {
       const ReducedEigen red = reduced_eigen(b);
       double below_ratio = -std::numeric_limits<double>::infinity(), err20 = 0.0;
       for (int i = 0; i < b.n_reduced(); ++i)
-        below_ratio = std::max(below_ratio, (md.full.values(i) - red.eig.values(i)) /
-                                                (red.bound(i) + md.full_bound(i)));
+        below_ratio = std::max(below_ratio, (full().values(i) - red.eig.values(i)) /
+                                                (red.bound(i) + full_bound()(i)));
       for (int i = 0; i < 20; ++i)
-        err20 =
-            std::max(err20, std::abs(red.eig.values(i) - md.full.values(i)) / md.full.values(i));
+        err20 = std::max(err20, std::abs(red.eig.values(i) - full().values(i)) / full().values(i));
       std::printf("accepted, cond_rb = %.3e (exact %.3e); lowest 20 eigenvalues max relative "
                   "error %.3e (free modes 0..%d are in the basis); Rayleigh-Ritz shortfall %.2e "
                   "of bound\n",
