@@ -9,25 +9,13 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCholesky>
 
+#include "assembler.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 
 namespace {
 
 using SpMat = Eigen::SparseMatrix<double>;
-
-SpMat block_diagonal(const SpMat& a, const SpMat& b) {
-  std::vector<Eigen::Triplet<double>> t;
-  for (int j = 0; j < a.outerSize(); ++j)
-    for (SpMat::InnerIterator it(a, j); it; ++it)
-      t.emplace_back(it.row(), it.col(), it.value());
-  for (int j = 0; j < b.outerSize(); ++j)
-    for (SpMat::InnerIterator it(b, j); it; ++it)
-      t.emplace_back(a.rows() + it.row(), a.cols() + it.col(), it.value());
-  SpMat m(a.rows() + b.rows(), a.cols() + b.cols());
-  m.setFromTriplets(t.begin(), t.end());
-  return m;
-}
 
 struct System {
   SpMat k;
@@ -37,8 +25,8 @@ struct System {
         rsi::load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
     const rsi::BladedDisk bd = rsi::assemble_bladed_disk(c);
     const rsi::Casing casing = rsi::assemble_casing(c);
-    k = block_diagonal(bd.stiffness, casing.stiffness);
-    m = block_diagonal(bd.mass, casing.mass);
+    k = rsi::block_diagonal(bd.stiffness, casing.stiffness);
+    m = rsi::block_diagonal(bd.mass, casing.mass);
   }
 };
 

@@ -3,10 +3,12 @@
 // blades refined (9, 18, 36, 72 elements per blade) and more blades (22,
 // 44, 88). Steps are taken from rest under the casing forcing, so contact
 // (rare in the first steps) does not weigh on the numbers.
-// Run: build/bench/bench_step_scaling --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// Run: build/bench/bench_step_scaling --benchmark_repetitions=5
+// --benchmark_report_aggregates_only=true
 
 #include <benchmark/benchmark.h>
 
+#include "assembler.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "casing_forcing.hpp"
@@ -32,33 +34,25 @@ rsi::Case scaled_case(int blade_elements, int blades) {
   return c;
 }
 
-SpMat block_diagonal(const SpMat& a, const SpMat& b) {
-  std::vector<Eigen::Triplet<double>> t;
-  for (int j = 0; j < a.outerSize(); ++j)
-    for (SpMat::InnerIterator it(a, j); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-  for (int j = 0; j < b.outerSize(); ++j)
-    for (SpMat::InnerIterator it(b, j); it; ++it) t.emplace_back(a.rows() + it.row(), a.cols() + it.col(), it.value());
-  SpMat m(a.rows() + b.rows(), a.cols() + b.cols());
-  m.setFromTriplets(t.begin(), t.end());
-  return m;
-}
-
 void full_step(benchmark::State& state) {
-  const rsi::Case c = scaled_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const rsi::Case c =
+      scaled_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const rsi::BladedDisk bd = rsi::assemble_bladed_disk(c);
   const rsi::Casing casing = rsi::assemble_casing(c);
   const rsi::TipCasingContact law(bd, casing, c);
-  rsi::CentralDifference cd(block_diagonal(bd.stiffness, casing.stiffness), block_diagonal(bd.mass, casing.mass),
-                            c.time.step, law);
+  rsi::CentralDifference cd(rsi::block_diagonal(bd.stiffness, casing.stiffness),
+                            rsi::block_diagonal(bd.mass, casing.mass), c.time.step, law);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(bd.n_dofs() + casing.n_dofs());
   f.tail(casing.n_dofs()) = rsi::casing_forcing(casing, c.forcing);
   cd.start(f);
-  for (auto _ : state) benchmark::DoNotOptimize(cd.step(f));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(cd.step(f));
   state.counters["dofs"] = bd.n_dofs() + casing.n_dofs();
 }
 
 void reduced_step(benchmark::State& state) {
-  const rsi::Case c = scaled_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
+  const rsi::Case c =
+      scaled_case(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const rsi::BladedDisk bd = rsi::assemble_bladed_disk(c);
   const rsi::Casing casing = rsi::assemble_casing(c);
   const rsi::ReducedBasis basis = rsi::reduce_bladed_disk(bd, "cb", 44);
@@ -66,14 +60,17 @@ void reduced_step(benchmark::State& state) {
   rsi::ReducedIntegrator integrator(basis, casing, c.time.step, contact);
   const Eigen::VectorXd f = rsi::casing_forcing(casing, c.forcing);
   integrator.start(f);
-  for (auto _ : state) benchmark::DoNotOptimize(integrator.step(f));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(integrator.step(f));
   state.counters["dofs"] = bd.n_dofs() + casing.n_dofs();
   state.counters["reduced_dofs"] = basis.n_reduced() + casing.n_dofs();
 }
 
 void sizes(benchmark::internal::Benchmark* b) {
-  for (int elements : {9, 18, 36, 72}) b->Args({elements, 22});
-  for (int blades : {44, 88}) b->Args({9, blades});
+  for (int elements : {9, 18, 36, 72})
+    b->Args({elements, 22});
+  for (int blades : {44, 88})
+    b->Args({9, blades});
   b->Unit(benchmark::kMicrosecond);
 }
 

@@ -30,4 +30,18 @@ Eigen::SparseMatrix<double> Assembler::build(const Triplets& t) const {
   return m;
 }
 
+Eigen::SparseMatrix<double> block_diagonal(const Eigen::SparseMatrix<double>& a,
+                                           const Eigen::SparseMatrix<double>& b) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j < a.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(a, j); it; ++it)
+      t.emplace_back(it.row(), it.col(), it.value());
+  for (int j = 0; j < b.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, j); it; ++it)
+      t.emplace_back(a.rows() + it.row(), a.cols() + it.col(), it.value());
+  Eigen::SparseMatrix<double> m(a.rows() + b.rows(), a.cols() + b.cols());
+  m.setFromTriplets(t.begin(), t.end());
+  return m;
+}
+
 } // namespace rsi

@@ -41,4 +41,8 @@ private:
   Triplets m_m;
 };
 
+/// diag(a, b): the system matrix of two parts that share no dof.
+Eigen::SparseMatrix<double> block_diagonal(const Eigen::SparseMatrix<double>& a,
+                                           const Eigen::SparseMatrix<double>& b);
+
 } // namespace rsi

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "assembler.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "casing_forcing.hpp"
@@ -18,20 +19,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-Eigen::SparseMatrix<double> block_diagonal(const Eigen::SparseMatrix<double>& a,
-                                           const Eigen::SparseMatrix<double>& b) {
-  std::vector<Eigen::Triplet<double>> t;
-  for (int j = 0; j < a.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(a, j); it; ++it)
-      t.emplace_back(it.row(), it.col(), it.value());
-  for (int j = 0; j < b.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(b, j); it; ++it)
-      t.emplace_back(a.rows() + it.row(), a.cols() + it.col(), it.value());
-  Eigen::SparseMatrix<double> m(a.rows() + b.rows(), a.cols() + b.cols());
-  m.setFromTriplets(t.begin(), t.end());
-  return m;
 }
 
 } // namespace
