@@ -29,13 +29,13 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
 double ReducedIntegrator::energy() const {
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
-  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq_q) + 0.5 * vc.dot(m_mc * vc) +
+  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + 0.5 * vc.dot(m_mc * vc) +
          0.5 * m_c_prev.dot(m_kc_c);
 }
 
 void ReducedIntegrator::start(const Eigen::VectorXd& casing_force) {
   m_n = 0;
-  m_q = m_q_prev = m_kq_q = Eigen::VectorXd::Zero(m_kq.rows());
+  m_q = m_q_prev = Eigen::VectorXd::Zero(m_kq.rows());
   m_c = m_kc_c = Eigen::VectorXd::Zero(m_kc.rows());
   m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(casing_force);
   m_contact.evaluate(m_q, m_q, m_c, m_c, 0.0, m_tips);
@@ -165,7 +165,6 @@ StepReport ReducedIntegrator::step(const Eigen::VectorXd& casing_force) {
   m_q.swap(m_q_next);
   m_c_prev.swap(m_c);
   m_c.swap(m_c_next);
-  m_kq_q.noalias() = m_kq * m_q;
   m_kc_c.noalias() = m_kc * m_c;
   ++m_n;
 

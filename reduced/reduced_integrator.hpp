@@ -12,7 +12,8 @@
 //   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
 // M^-1 (r x r) and M_c^-1 (dense, 4 dofs per casing node) are formed once
 // from Cholesky factorizations whose status is checked.
-// Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1}.
+// Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
+// computed when asked (its dense products would double the cost of a step).
 
 #include <stdexcept>
 #include <vector>
@@ -73,7 +74,7 @@ private:
   const ReducedTipContact& m_contact;
 
   int m_n = 0;
-  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev, m_kc_c, m_kq_q;
+  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev, m_kc_c;
   Eigen::VectorXd m_q_next, m_c_next, m_dq, m_dc;
   Eigen::VectorXd m_gap, m_lambda;
   std::vector<TipContact> m_tips;
