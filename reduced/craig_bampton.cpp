@@ -29,11 +29,7 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
       place_rows(p.n(), p.interior, psi) +
       place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
   basis.transformation = t;
-  for (int b = 0; b < p.n_boundary(); ++b)
-    basis.boundary_position.push_back(eta + b);
-  project(stiffness, mass, basis);
-  basis.build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  finish_basis(stiffness, mass, p.n_boundary(), eta, start, basis);
   return basis;
 }
 

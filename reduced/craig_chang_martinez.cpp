@@ -86,11 +86,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     t(p.boundary[b], b) = 1.0;
   }
   basis.transformation = t;
-  for (int b = 0; b < nb; ++b)
-    basis.boundary_position.push_back(b);
-  project(stiffness, mass, basis);
-  basis.build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  finish_basis(stiffness, mass, nb, 0, start, basis);
   return basis;
 }
 

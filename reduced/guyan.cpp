@@ -19,15 +19,19 @@ Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, c
   return psi;
 }
 
-void project(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
-             ReducedBasis& basis) {
+void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
+                  const Eigen::SparseMatrix<double>& mass, int n_boundary,
+                  int first_boundary_position, std::chrono::steady_clock::time_point start,
+                  ReducedBasis& basis) {
+  for (int b = 0; b < n_boundary; ++b)
+    basis.boundary_position.push_back(first_boundary_position + b);
   const Eigen::MatrixXd& t = basis.transformation;
-  const Eigen::MatrixXd kt = stiffness * t;
-  const Eigen::MatrixXd mt = mass * t;
-  const Eigen::MatrixXd k = t.transpose() * kt;
-  const Eigen::MatrixXd m = t.transpose() * mt;
+  const Eigen::MatrixXd k = t.transpose() * (stiffness * t);
+  const Eigen::MatrixXd m = t.transpose() * (mass * t);
   basis.stiffness = 0.5 * (k + k.transpose());
   basis.mass = 0.5 * (m + m.transpose());
+  basis.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 ReducedBasis guyan(const Eigen::SparseMatrix<double>& stiffness,
@@ -39,11 +43,7 @@ ReducedBasis guyan(const Eigen::SparseMatrix<double>& stiffness,
   basis.transformation =
       place_rows(p.n(), p.interior, psi) +
       place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
-  for (int b = 0; b < p.n_boundary(); ++b)
-    basis.boundary_position.push_back(b);
-  project(stiffness, mass, basis);
-  basis.build_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  finish_basis(stiffness, mass, p.n_boundary(), 0, start, basis);
   return basis;
 }
 

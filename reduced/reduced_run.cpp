@@ -13,15 +13,7 @@
 #include "reduction.hpp"
 
 namespace rsi {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-} // namespace
+namespace {} // namespace
 
 double reduced_omega_max(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness, basis.mass,

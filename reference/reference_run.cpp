@@ -13,15 +13,7 @@
 #include "tip_casing_contact.hpp"
 
 namespace rsi {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-} // namespace
+namespace {} // namespace
 
 RunResult run_reference(const Case& c, const RunOptions& options) {
   const Clock::time_point start = Clock::now();

@@ -4,6 +4,7 @@
 // the summary's maxima over every step, the blade-1 contact intervals, the
 // history rows, the energy balance and the blow-up tests.
 
+#include <chrono>
 #include <functional>
 #include <stdexcept>
 
@@ -14,6 +15,13 @@
 #include "history.hpp"
 
 namespace rsi {
+
+using Clock = std::chrono::steady_clock;
+
+/// Wall seconds since `start` (the run's own timings, SPEC §6).
+inline double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 /// Delta t at or above the stability limit 2/omega_max, not forced.
 class StabilityError : public std::invalid_argument {
