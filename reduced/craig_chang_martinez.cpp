@@ -4,14 +4,25 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
 
 #include "guyan.hpp"
 #include "modal_analysis.hpp"
 
 namespace rsi {
+namespace {
+
+std::string square_size(int n) {
+  return std::to_string(n) + " x " + std::to_string(n);
+}
+
+const char* const stiffness_remedy =
+    "the residual flexibility K^-1 - Phi_1 Omega_1^-1 Phi_1^T needs a supported part (is the "
+    "hub clamped?)";
+
+} // namespace
 
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
@@ -36,19 +47,26 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   Eigen::MatrixXd r;
   if (few_modes(psi, n) == ModalSolver::dense) {
     const Modes all = lowest_modes(stiffness, mass, n, ModalSolver::dense);
+    // The tail sum needs no K^-1, but it is R only for a nonsingular K: a
+    // rigid motion leaves an eigenvalue at the round-off level n eps lambda_max.
+    const double floor = n * std::numeric_limits<double>::epsilon() * all.omega_squared(n - 1);
+    if (!(all.omega_squared(0) > floor)) {
+      std::ostringstream message;
+      message << "Craig-Chang-Martinez: the bladed-disk stiffness K (" << square_size(n)
+              << ") is singular or indefinite (lowest eigenvalue of K phi = omega^2 M phi "
+              << all.omega_squared(0) << " rad^2/s^2 <= n eps lambda_max = " << floor << "); "
+              << stiffness_remedy;
+      throw ReductionError(message.str());
+    }
     phi1 = all.shapes.leftCols(psi);
     const Eigen::MatrixXd phi2 = all.shapes.rightCols(n - psi);
     r = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
         take_rows(phi2, p.boundary).transpose();
   } else {
-    Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> factor(stiffness);
-    if (factor.info() != Eigen::Success)
-      throw ReductionError(
-          "Craig-Chang-Martinez: K is not positive definite (CHOLMOD): the residual flexibility "
-          "needs a supported part (is the hub clamped?)");
-    r = factor.solve(place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)));
-    if (factor.info() != Eigen::Success)
-      throw ReductionError("Craig-Chang-Martinez: CHOLMOD solve failed");
+    r = solve_positive_definite(
+        stiffness, place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)),
+        "Craig-Chang-Martinez: the bladed-disk stiffness K (" + square_size(n) + ")",
+        stiffness_remedy);
     if (psi > 0) {
       const Modes free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
       phi1 = free.shapes;

@@ -12,6 +12,9 @@
 // with cond(R_B) >= 1/(n eps) (no significant digit left in R_B^-1) is
 // refused with ReductionError. Attachment modes on rotation dofs make R_B
 // ill-conditioned (paper §5.3; Bladh, Pierre, Castanier, AIAA J. 41, 2003).
+// K must be positive definite (a supported part: the hub clamped); a
+// singular or indefinite K (CHOLMOD pivots, or the lowest eigenvalue on the
+// dense path) is refused with ReductionError naming K.
 // Valid range: 0 <= psi <= n - n_B.
 
 #include <Eigen/SparseCore>

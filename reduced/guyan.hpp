@@ -6,6 +6,7 @@
 // psi = 0 (SPEC V4). Assumes K_II positive definite (the hub is clamped).
 
 #include <chrono>
+#include <string>
 
 #include <Eigen/SparseCore>
 
@@ -14,8 +15,21 @@
 
 namespace rsi {
 
-/// Psi_I = -K_II^-1 K_IB (n_I x n_B), by a sparse Cholesky factorization
-/// (CHOLMOD). Throws ReductionError if K_II is not positive definite.
+/// X = A^-1 B for a matrix A that must be symmetric positive definite, by a
+/// sparse Cholesky factorization (CHOLMOD). CHOLMOD's simplicial LDL^T does
+/// not stop at a negative or zero pivot, and a singular A factorizes with
+/// round-off pivots, so the factor is checked: a pivot d <= 0 (A indefinite)
+/// or a reciprocal condition estimate min|d| / max|d| < n eps (A singular to
+/// working precision) throws ReductionError "`name` is singular or
+/// indefinite (...); `remedy`", with the column of A and the pivot, or the
+/// estimate.
+Eigen::MatrixXd solve_positive_definite(const Eigen::SparseMatrix<double>& a,
+                                        const Eigen::Ref<const Eigen::MatrixXd>& b,
+                                        const std::string& name, const std::string& remedy);
+
+/// Psi_I = -K_II^-1 K_IB (n_I x n_B), by solve_positive_definite. Throws
+/// ReductionError naming K_II if it is singular or indefinite (the boundary
+/// does not hold the part against every rigid motion).
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p);
 
 /// Completes a basis whose transformation is set: the n_boundary boundary

@@ -1,0 +1,101 @@
+// SPEC §3, style habit 6: a singular or indefinite stiffness reaching a
+// reduction is refused by name (ReductionError naming the matrix), never a
+// crash or a basis built on round-off. With a free hub (HubSupport::free)
+// the bladed disk keeps its exact rigid rotation (test_rim_tie), so K is
+// singular; holding only the 22 tip u dofs does not stop that rotation (it
+// moves the tips along v), so K_II is singular too. K - sigma M with sigma
+// inside the spectrum is indefinite, which CHOLMOD's LDL^T does not flag
+// on its own.
+
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "bladed_disk.hpp"
+#include "craig_bampton.hpp"
+#include "craig_chang_martinez.hpp"
+#include "guyan.hpp"
+#include "reduction.hpp"
+
+namespace rsi {
+namespace {
+
+const Case& default_case() {
+  static const Case c = load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
+  return c;
+}
+
+const BladedDisk& free_hub_disk() {
+  static const BladedDisk bd = assemble_bladed_disk(default_case(), HubSupport::free);
+  return bd;
+}
+
+/// The message of the ReductionError `build` throws (empty if it throws none).
+template <class Build> std::string refusal(Build build) {
+  try {
+    build();
+  } catch (const ReductionError& e) {
+    std::printf("  refused: %s\n", e.what());
+    return e.what();
+  }
+  return {};
+}
+
+bool contains(const std::string& text, const std::string& fragment) {
+  return text.find(fragment) != std::string::npos;
+}
+
+TEST(SingularModels, CcmRefusesFreeHubStiffnessOnTheCholmodPath) {
+  // psi < n/4: R(:, B) from a Cholesky factorization of K.
+  for (int psi : {0, 10}) {
+    const std::string message = refusal([&] { reduce_bladed_disk(free_hub_disk(), "ccm", psi); });
+    EXPECT_TRUE(contains(message, "bladed-disk stiffness K (748 x 748) is singular or indefinite"))
+        << "psi = " << psi << ": " << message;
+    EXPECT_TRUE(contains(message, "CHOLMOD")) << message;
+  }
+}
+
+TEST(SingularModels, CcmRefusesFreeHubStiffnessOnTheDensePath) {
+  // psi >= n/4: every mode from the dense solver; the rigid rotation sits at round-off.
+  const std::string message = refusal([&] { reduce_bladed_disk(free_hub_disk(), "ccm", 300); });
+  EXPECT_TRUE(contains(message, "bladed-disk stiffness K (748 x 748) is singular or indefinite"))
+      << message;
+  EXPECT_TRUE(contains(message, "lowest eigenvalue")) << message;
+}
+
+TEST(SingularModels, ConstraintModesRefuseASingularInteriorStiffness) {
+  const BladedDisk& bd = free_hub_disk();
+  const Partition p = make_partition(bd.n_dofs(), bd.tip_radial);
+  for (int eta : {0, 5}) {
+    const std::string message = refusal([&] { craig_bampton(bd.stiffness, bd.mass, p, eta); });
+    EXPECT_TRUE(contains(message, "interior stiffness K_II (726 x 726"))
+        << "eta = " << eta << ": " << message;
+    EXPECT_TRUE(contains(message, "singular or indefinite")) << message;
+  }
+  EXPECT_TRUE(contains(refusal([&] { guyan(bd.stiffness, bd.mass, p); }), "K_II")) << "guyan";
+}
+
+TEST(SingularModels, IndefiniteStiffnessIsRefused) {
+  // sigma = 4e5 rad^2/s^2 (101 Hz) lies above the first family (44 Hz): K - sigma M
+  // has 22 or more negative eigenvalues, and its LDL^T negative pivots.
+  const BladedDisk bd = assemble_bladed_disk(default_case());
+  const Eigen::SparseMatrix<double> shifted = bd.stiffness - 4e5 * bd.mass;
+  const Partition p = make_partition(bd.n_dofs(), bd.boundary);
+  const std::string message = refusal([&] { craig_chang_martinez(shifted, bd.mass, p, 0); });
+  EXPECT_TRUE(contains(message, "bladed-disk stiffness K (682 x 682) is singular or indefinite"))
+      << message;
+  EXPECT_TRUE(contains(message, "<= 0 at column")) << message;
+}
+
+TEST(SingularModels, ClampedHubIsAccepted) {
+  // The same checks pass the supported model: nothing refused that should not be.
+  const BladedDisk bd = assemble_bladed_disk(default_case());
+  for (const char* method : {"guyan", "cb", "ccm"}) {
+    const int modes = std::string(method) == "guyan" ? 0 : 10;
+    EXPECT_EQ(refusal([&] { reduce_bladed_disk(bd, method, modes); }), "") << method;
+  }
+  EXPECT_EQ(refusal([&] { reduce_bladed_disk(bd, "ccm", 300); }), "") << "ccm dense path";
+}
+
+} // namespace
+} // namespace rsi
