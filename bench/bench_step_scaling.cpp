@@ -50,13 +50,7 @@ void full_step(benchmark::State& state) {
   for (auto _ : state)
     benchmark::DoNotOptimize(cd.step(f));
   const int n = bd.n_dofs() + casing.n_dofs();
-  // Flops of one contact-free step: K u (2 nnz(K)), the LDLT solve (two
-  // triangular solves, 2 nnz(L) each, and D: n), about 12 n of vector updates
-  // (predictor, velocity, works); the contact geometry (22 tips) is negligible.
-  const Eigen::SimplicialLDLT<SpMat> ldlt(rsi::block_diagonal(bd.mass, casing.mass));
-  const double nnz_l = static_cast<double>(ldlt.matrixL().nestedExpression().nonZeros());
-  const double nnz_k = static_cast<double>(bd.stiffness.nonZeros() + casing.stiffness.nonZeros());
-  const double flops = 2 * nnz_k + 4 * nnz_l + 13.0 * n;
+  const double flops = cd.flops_per_step(); // counted by the integrator
   state.counters["dofs"] = n;
   state.counters["flops_per_step"] = flops;
   state.counters["GFLOPs"] = benchmark::Counter(
@@ -75,16 +69,10 @@ void reduced_step(benchmark::State& state) {
   integrator.start(f);
   for (auto _ : state)
     benchmark::DoNotOptimize(integrator.step(f));
-  // Flops of one contact-free step: M^-1 K^ q (2 r^2, dense),
-  // the casing's K_c c and LDLT solve (2 nnz(K_c) + 4 nnz(L_c) + n_c), and
-  // about 12 (r + n_c) of vector updates.
   const double r = basis.n_reduced();
   const double nc = casing.n_dofs();
-  const Eigen::SimplicialLDLT<SpMat> ldlt(casing.mass);
-  const double nnz_l = static_cast<double>(ldlt.matrixL().nestedExpression().nonZeros());
-  const double casing_flops =
-      2.0 * static_cast<double>(casing.stiffness.nonZeros()) + 4 * nnz_l + 13 * nc;
-  const double flops = 2 * r * r + 12 * r + casing_flops;
+  const double flops = integrator.flops_per_step(); // counted by the integrator
+  const double casing_flops = integrator.casing_flops_per_step();
   state.counters["dofs"] = bd.n_dofs() + casing.n_dofs();
   state.counters["reduced_dofs"] = r + nc;
   state.counters["flops_per_step"] = flops;

@@ -60,6 +60,10 @@ std::string summary_json(const RunSummary& s) {
   j["dt"] = s.dt;
   j["omega_max"] = s.omega_max;
   j["critical_dt"] = s.critical_dt;
+  j["bladed_disk_critical_dt"] = s.bladed_disk_critical_dt;
+  j["flops_per_step"] = s.flops_per_step;
+  j["casing_flops_per_step"] = s.casing_flops_per_step;
+  j["basis_seconds"] = s.basis_seconds;
   j["wall_seconds"] = s.wall_seconds;
   j["integration_seconds"] = s.integration_seconds;
   j["max_penetration"] = s.max_penetration;

@@ -26,6 +26,17 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
 }
 
+double ReducedIntegrator::casing_flops_per_step() const {
+  const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
+  return 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l +
+         13.0 * static_cast<double>(m_kc.rows());
+}
+
+double ReducedIntegrator::flops_per_step() const {
+  const auto r = static_cast<double>(m_kq.rows());
+  return 2.0 * r * r + 12.0 * r + casing_flops_per_step();
+}
+
 double ReducedIntegrator::energy() const {
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;

@@ -53,6 +53,13 @@ public:
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
+  /// Flops of a contact-free step: the dense M^-1 K^ q (2 r^2), about 12 r
+  /// of vector updates, and the casing's flops (below).
+  double flops_per_step() const;
+  /// The full casing's part: K_c c (2 nnz(K_c)), its LDLT solve (4 nnz(L_c)
+  /// + n_c) and about 12 n_c of vector updates: the floor under every
+  /// reduced run.
+  double casing_flops_per_step() const;
 
 private:
   double flexibility(const TipContact& i, const TipContact& j) const;

@@ -39,13 +39,17 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
   RunSummary& s = result.summary;
   s.method = basis.method;
   s.n_dofs = out.basis.n_reduced() + casing.n_dofs();
-  check_time_step(
-      c.time.step,
-      std::max(reduced_omega_max(out.basis), max_angular_frequency(casing.stiffness, casing.mass)),
-      options.run.force, s);
+  s.basis_seconds = basis.build_seconds;
+  const double omega_bladed_disk = reduced_omega_max(out.basis);
+  s.bladed_disk_critical_dt = 2.0 / omega_bladed_disk;
+  check_time_step(c.time.step,
+                  std::max(omega_bladed_disk, max_angular_frequency(casing.stiffness, casing.mass)),
+                  options.run.force, s);
 
   const ReducedTipContact contact(bd, out.basis, casing, c);
   ReducedIntegrator integrator(out.basis, casing, c.time.step, contact);
+  s.flops_per_step = integrator.flops_per_step();
+  s.casing_flops_per_step = integrator.casing_flops_per_step();
   const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
   const Eigen::VectorXd no_force = Eigen::VectorXd::Zero(casing.n_dofs());
 

@@ -11,27 +11,52 @@ namespace rsi {
 CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
                                      const Eigen::SparseMatrix<double>& mass, double dt,
                                      const ContactLaw& law)
-    : m_k(stiffness)
-    , m_m(mass)
-    , m_dt(dt)
+    : m_dt(dt)
     , m_law(law)
-    , m_inverse_columns(mass.rows()) {
+    , m_inverse_columns(mass.rows())
+    , m_sparse_inverse_columns(mass.rows()) {
   if (!(dt > 0.0)) throw std::invalid_argument("CentralDifference: dt must be > 0");
   if (stiffness.rows() != mass.rows() || stiffness.cols() != mass.cols() ||
       mass.rows() != mass.cols())
     throw std::invalid_argument("CentralDifference: K and M must be square and of the same size");
   m_mass_factor.compute(mass);
-  if (m_mass_factor.info() != Eigen::Success)
+  if (m_mass_factor.info() != Eigen::Success || !(m_mass_factor.vectorD().minCoeff() > 0.0))
     throw IntegrationError(
         "central differences: the mass matrix is not positive definite (Cholesky failed)");
+  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& p =
+      m_mass_factor.permutationP();
+  m_position =
+      p.size() > 0 ? p.indices() : Eigen::VectorXi::LinSpaced(mass.rows(), 0, mass.rows() - 1);
+  m_inverse_diagonal = m_mass_factor.vectorD().cwiseInverse();
+  if (p.size() > 0) {
+    m_k = Eigen::SparseMatrix<double>(p * stiffness * p.inverse());
+    m_m = Eigen::SparseMatrix<double>(p * mass * p.inverse());
+  } else {
+    m_k = stiffness;
+    m_m = mass;
+  }
+}
+
+void CentralDifference::apply_inverse_mass(Eigen::VectorXd& r) const {
+  m_mass_factor.matrixL().solveInPlace(r);
+  r.array() *= m_inverse_diagonal.array();
+  m_mass_factor.matrixU().solveInPlace(r);
+}
+
+void CentralDifference::to_physical(const Eigen::VectorXd& permuted,
+                                    Eigen::VectorXd& physical) const {
+  physical.resize(permuted.size());
+  for (Eigen::Index i = 0; i < permuted.size(); ++i)
+    physical(i) = permuted(m_position(i));
 }
 
 const Eigen::VectorXd& CentralDifference::inverse_mass_column(int dof) {
   Eigen::VectorXd& column = m_inverse_columns[dof];
   if (column.size() == 0) {
-    Eigen::VectorXd e = Eigen::VectorXd::Zero(m_m.rows());
-    e(dof) = 1.0;
-    column = m_mass_factor.solve(e);
+    column = Eigen::VectorXd::Zero(m_m.rows());
+    column(m_position(dof)) = 1.0;
+    apply_inverse_mass(column);
+    m_sparse_inverse_columns[dof] = column.sparseView();
   }
   return column;
 }
@@ -42,9 +67,22 @@ double CentralDifference::contact_flexibility(const SparseRow& gradient,
   for (const auto& [b, db] : direction) {
     const Eigen::VectorXd& column = inverse_mass_column(b);
     for (const auto& [a, ga] : gradient)
-      sum += ga * db * column(a);
+      sum += ga * db * column(m_position(a));
   }
   return m_dt * m_dt * sum;
+}
+
+double CentralDifference::permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const {
+  double sum = 0.0;
+  for (const auto& [dof, c] : row)
+    sum += c * u(m_position(dof));
+  return sum;
+}
+
+double CentralDifference::flops_per_step() const {
+  const auto nnz_l = static_cast<double>(m_mass_factor.matrixL().nestedExpression().nonZeros());
+  return 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l +
+         13.0 * static_cast<double>(m_k.rows());
 }
 
 double CentralDifference::energy() const {
@@ -55,11 +93,16 @@ double CentralDifference::energy() const {
 void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   const int n = static_cast<int>(m_m.rows());
   m_n = 0;
+  m_force.resize(n);
+  for (int i = 0; i < n; ++i)
+    m_force(m_position(i)) = f0(i);
   m_u = Eigen::VectorXd::Zero(n);
-  m_u_prev = 0.5 * m_dt * m_dt * m_mass_factor.solve(f0);
+  m_u_prev = 0.5 * m_dt * m_dt * m_force;
+  apply_inverse_mass(m_u_prev);
   m_ku = Eigen::VectorXd::Zero(n);
+  m_x = Eigen::VectorXd::Zero(n);
   m_lambda = Eigen::VectorXd::Zero(m_law.n_constraints());
-  m_law.evaluate(m_u, Eigen::VectorXd::Zero(n), 0.0, m_state);
+  m_law.evaluate(m_x, Eigen::VectorXd::Zero(n), 0.0, m_state);
   m_gap = m_state.gap;
   m_initial_energy = energy();
   m_external_work = 0.0;
@@ -119,8 +162,10 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
     correction.setZero(m_m.rows());
     for (int b = 0; b < na; ++b) {
       lambda(idx[b]) = la(b);
-      for (const auto& [dof, c] : s.direction[idx[b]])
-        correction += (m_dt * m_dt * la(b) * c) * inverse_mass_column(dof);
+      for (const auto& [dof, c] : s.direction[idx[b]]) {
+        inverse_mass_column(dof); // fills the sparse column
+        correction += (m_dt * m_dt * la(b) * c) * m_sparse_inverse_columns[dof];
+      }
     }
     return lambda;
   }
@@ -130,12 +175,19 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
 
 StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n) {
   const double dt2 = m_dt * m_dt;
-  m_predicted = f_n - m_ku;
-  m_predicted = m_mass_factor.solve(m_predicted);
+  const Eigen::Index n = m_u.size();
+  bool forced = false;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    m_force(m_position(i)) = f_n(i);
+    forced = forced || f_n(i) != 0.0;
+  }
+  m_predicted = m_force - m_ku;
+  apply_inverse_mass(m_predicted);
   m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
   const double t_next = (m_n + 1) * m_dt;
-  m_velocity = (m_predicted - m_u) / m_dt;
-  m_law.evaluate(m_predicted, m_velocity, t_next, m_predicted_state);
+  to_physical(m_predicted, m_x_next);
+  m_velocity = (m_x_next - m_x) / m_dt;
+  m_law.evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
   const ContactState& s = m_predicted_state;
   m_lambda = solve_active_set(s, m_correction);
   const bool corrected = m_lambda.any();
@@ -143,11 +195,12 @@ StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n)
   // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T;
   // m_predicted becomes u_{n+1}.
   if (corrected) m_predicted += m_correction;
-  m_external_work += 0.5 * (f_n.dot(m_predicted) - f_n.dot(m_u_prev));
+  if (forced) m_external_work += 0.5 * (m_force.dot(m_predicted) - m_force.dot(m_u_prev));
   for (int k = 0; k < m_lambda.size(); ++k)
     if (m_lambda(k) != 0.0)
       m_contact_work +=
-          0.5 * m_lambda(k) * (dot(s.direction[k], m_predicted) - dot(s.direction[k], m_u_prev));
+          0.5 * m_lambda(k) *
+          (permuted_dot(s.direction[k], m_predicted) - permuted_dot(s.direction[k], m_u_prev));
 
   m_u_prev.swap(m_u);
   m_u.swap(m_predicted);
@@ -157,9 +210,11 @@ StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n)
   // Monitors at the corrected state (SPEC V5).
   // Without a correction u_{n+1} is the prediction: same gaps, same velocities.
   if (corrected) {
-    m_velocity = (m_u - m_u_prev) / m_dt;
-    m_law.evaluate(m_u, m_velocity, t_next, m_state);
+    to_physical(m_u, m_x_next);
+    m_velocity = (m_x_next - m_x) / m_dt;
+    m_law.evaluate(m_x_next, m_velocity, t_next, m_state);
   }
+  m_x.swap(m_x_next);
   const ContactState& after = corrected ? m_state : s;
   m_gap = after.gap;
   StepReport report;

@@ -17,12 +17,16 @@
 // right-hand side step by step and E is computed from its definition, so
 // E - E_0 - W_ext - W_contact is round-off unless the scheme is broken.
 //
-// M^-1 is applied through a sparse Cholesky factorization (Eigen
-// SimplicialLDLT, AMD ordering: the fastest solve of those measured by
-// bench/bench_mass_solve at this size); its status is checked after
-// factorizing. The columns M^-1 e_i met by contact rows are computed once
-// and cached. The energy costs a product with M, so it is computed when
-// asked (the works are summed at every step).
+// M^-1 is applied through a sparse Cholesky factorization P M P^T = L D L^T
+// (Eigen SimplicialLDLT, AMD ordering: the fastest solve of those measured
+// by bench/bench_mass_solve at this size); its status is checked after
+// factorizing. The state is kept in the permuted coordinates u' = P u, with
+// K' = P K P^T and M' = P M P^T, so a step applies L^-1, D^-1 and L^-T with
+// no permutation (permuting a vector in place took 15 % of a step); the
+// contact law and the accessors see physical vectors, gathered once per
+// evaluation. The columns M^-1 e_i met by contact rows are computed once and
+// cached, dense for the entries of W and sparse for the correction. The energy costs a product with
+// M, so it is computed when asked (the works are summed at every step).
 
 #include <stdexcept>
 #include <vector>
@@ -57,36 +61,56 @@ public:
 
   int step_index() const { return m_n; } ///< n of the current u_n
   double time() const { return m_n * m_dt; }
-  const Eigen::VectorXd& displacement() const { return m_u; }
-  const Eigen::VectorXd& previous_displacement() const { return m_u_prev; }
-  const Eigen::VectorXd& lambda() const { return m_lambda; } ///< multipliers of the last step [N]
-  const Eigen::VectorXd& gap() const { return m_gap; }       ///< gaps at u_n
+  const Eigen::VectorXd& displacement() const { return m_x; } ///< u_n
+  const Eigen::VectorXd& lambda() const { return m_lambda; }  ///< multipliers of the last step [N]
+  const Eigen::VectorXd& gap() const { return m_gap; }        ///< gaps at u_n
   double energy() const; ///< E_{n-1/2} [J], computed from its definition
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
+  /// Flops of a contact-free step: K'u (2 nnz(K)), L^-1 and L^-T (2 nnz(L)
+  /// each), D^-1 (n) and about 12 n of vector updates (force, predictor,
+  /// velocity, gathers); the contact geometry of a few tips is left out.
+  double flops_per_step() const;
 
 private:
+  /// M'^-1 e_p(dof) (permuted coordinates) for a physical dof, cached.
   const Eigen::VectorXd& inverse_mass_column(int dof);
   /// dt^2 G M^-1 D^T for one pair of rows, from the cached columns of M^-1.
   double contact_flexibility(const SparseRow& gradient, const SparseRow& direction);
+  /// G u for a row G in physical dofs and u in permuted coordinates.
+  double permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const;
+  /// r <- M'^-1 r through the factors of P M P^T.
+  void apply_inverse_mass(Eigen::VectorXd& r) const;
+  /// physical <- P^T permuted.
+  void to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical) const;
   Eigen::VectorXd solve_active_set(const ContactState& predicted, Eigen::VectorXd& correction);
 
   using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>; // faster products
-  RowMajorMatrix m_k;
-  RowMajorMatrix m_m;
   double m_dt;
   const ContactLaw& m_law;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mass_factor;
+  Eigen::VectorXi m_position;         ///< u'(m_position(i)) = u(i)
+  Eigen::VectorXd m_inverse_diagonal; ///< D^-1
+  RowMajorMatrix m_k;                 ///< K'
+  RowMajorMatrix m_m;                 ///< M'
   std::vector<Eigen::VectorXd> m_inverse_columns;
+  /// The same columns without their zeros: M is block diagonal (bladed
+  /// disk, casing), so a casing column has 156 nonzeros of 838.
+  std::vector<Eigen::SparseVector<double>> m_sparse_inverse_columns;
 
   int m_n = 0;
+  // Permuted coordinates.
   Eigen::VectorXd m_u;
   Eigen::VectorXd m_u_prev;
-  Eigen::VectorXd m_ku; ///< K u_n
+  Eigen::VectorXd m_ku; ///< K' u'_n
   // Work storage, kept to avoid allocations in the step loop.
+  Eigen::VectorXd m_force;
   Eigen::VectorXd m_predicted;
   Eigen::VectorXd m_correction;
+  // Physical coordinates, for the contact law.
+  Eigen::VectorXd m_x;      ///< u_n
+  Eigen::VectorXd m_x_next; ///< the prediction, then u_{n+1}
   Eigen::VectorXd m_velocity;
   ContactState m_predicted_state;
   ContactState m_state; ///< at u_n

@@ -41,9 +41,13 @@ struct RunSummary {
   bool completed = false;
   std::string status; ///< "completed" or what stopped the run, with the step
   double dt = 0.0;
-  double omega_max = 0.0;    ///< of the integrated model [rad/s]
-  double critical_dt = 0.0;  ///< 2 / omega_max [s]
-  double wall_seconds = 0.0; ///< whole run: assembly, omega_max, integration
+  double omega_max = 0.0;               ///< of the integrated model [rad/s]
+  double critical_dt = 0.0;             ///< 2 / omega_max [s]
+  double bladed_disk_critical_dt = 0.0; ///< 2 / omega_max of the (reduced) bladed disk alone [s]
+  double flops_per_step = 0.0;          ///< counted for a contact-free step
+  double casing_flops_per_step = 0.0;   ///< the full casing's part of it (reduced runs)
+  double basis_seconds = 0.0;           ///< time to build the reduced basis (reduced runs)
+  double wall_seconds = 0.0;            ///< whole run: assembly, omega_max, integration
   double integration_seconds = 0.0;
   double max_penetration = 0.0;       ///< [m]
   double min_lambda = 0.0;            ///< [N]

@@ -26,13 +26,15 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
   RunSummary& s = result.summary;
   s.method = "full";
   s.n_dofs = static_cast<int>(k.rows());
+  const double omega_bladed_disk = max_angular_frequency(bd.stiffness, bd.mass);
+  s.bladed_disk_critical_dt = 2.0 / omega_bladed_disk;
   check_time_step(c.time.step,
-                  std::max(max_angular_frequency(bd.stiffness, bd.mass),
-                           max_angular_frequency(casing.stiffness, casing.mass)),
+                  std::max(omega_bladed_disk, max_angular_frequency(casing.stiffness, casing.mass)),
                   options.force, s);
 
   const TipCasingContact law(bd, casing, c);
   CentralDifference cd(k, m, c.time.step, law);
+  s.flops_per_step = cd.flops_per_step();
   Eigen::VectorXd forcing = Eigen::VectorXd::Zero(k.rows());
   forcing.tail(casing.n_dofs()) = casing_forcing(casing, c.forcing);
   const Eigen::VectorXd no_force = Eigen::VectorXd::Zero(k.rows());
