@@ -94,8 +94,14 @@ struct Case {
 /// Throws CaseError naming `source`, the key and the allowed range.
 Case parse_case(const nlohmann::json& document, const std::string& source);
 
-/// Reads and validates a case file. Throws CaseError for a missing or
-/// unreadable file, malformed JSON and every schema violation.
+/// Parses `text` as JSON and validates it (parse_case). Throws CaseError
+/// naming `source` for malformed JSON and every schema violation; no other
+/// exception escapes for any text (checked by fuzz/fuzz_case_loader.cpp).
+Case parse_case_text(const std::string& text, const std::string& source);
+
+/// Reads and validates a case file (parse_case_text on its contents). Throws
+/// CaseError for a missing or unreadable file, malformed JSON and every
+/// schema violation.
 Case load_case(const std::string& path);
 
 } // namespace rsi

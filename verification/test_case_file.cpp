@@ -117,5 +117,23 @@ TEST(CaseFile, MalformedAndMissingFiles) {
   }
 }
 
+// Found by fuzz/fuzz_case_loader (fuzz/corpus/crash-number-overflow.json):
+// a number beyond the range of a double made nlohmann throw out_of_range,
+// not parse_error, which escaped the loader (the CLI exited 1, not 2).
+TEST(CaseFile, NumberBeyondDoubleRange) {
+  std::string text = default_document().dump();
+  const std::string from = "\"young_modulus\":210000000000.0";
+  ASSERT_NE(text.find(from), std::string::npos) << text;
+  text.replace(text.find(from), from.size(), "\"young_modulus\":210e999");
+  try {
+    parse_case_text(text, "test.json");
+    ADD_FAILURE() << "1e999 accepted";
+  } catch (const CaseError& e) {
+    std::printf("rejected: %s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("test.json: malformed JSON"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("210e999"), std::string::npos);
+  }
+}
+
 } // namespace
 } // namespace rsi
