@@ -9,6 +9,7 @@
 #include <sstream>
 #include <thread>
 
+#include "bladed_disk.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
 #include "output_files.hpp"
@@ -48,6 +49,20 @@ int run_campaign(const CampaignOptions& options) {
     throw UsageError(c.source + ": key 'campaign': missing or empty, nothing to run");
   if (options.jobs < 1 || options.jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
+  // Mode counts against the model before any run (the case loader only
+  // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
+  // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
+  {
+    const BladedDisk bd = assemble_bladed_disk(c);
+    const int most = bd.n_dofs() - static_cast<int>(bd.boundary.size());
+    for (const CampaignRun& r : c.campaign)
+      if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
+        throw UsageError(c.source + ": key 'campaign': " + r.method + " with " +
+                         std::to_string(r.modes) + " modes: must be in " +
+                         (r.method == "guyan" ? std::string("[0, 0] for guyan")
+                                              : "[0, " + std::to_string(most) + "] for " +
+                                                    r.method + " (dofs minus boundary dofs)"));
+  }
   make_output_directory(options.out, "--out");
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.

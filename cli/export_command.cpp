@@ -22,7 +22,6 @@ std::string dofs_csv(const DofMap& dofs) {
 
 void write_part(const std::string& dir, const Eigen::SparseMatrix<double>& stiffness,
                 const Eigen::SparseMatrix<double>& mass, const DofMap& dofs) {
-  make_output_directory(dir, "--out");
   write_symmetric_matrix_market(dir + "/K.mtx", stiffness);
   write_symmetric_matrix_market(dir + "/M.mtx", mass);
   write_text_file(dir + "/dofs.csv", dofs_csv(dofs));
@@ -35,6 +34,10 @@ int run_export(const ExportOptions& options) {
   const Case c = load_case(options.case_path);
   const BladedDisk bd = assemble_bladed_disk(c);
   const Casing casing = assemble_casing(c);
+  // Both directories before any file: an unwritable one leaves no part written.
+  make_output_directory(options.out, "--out");
+  make_output_directory(options.out + "/bladed-disk", "--out");
+  make_output_directory(options.out + "/casing", "--out");
   write_part(options.out + "/bladed-disk", bd.stiffness, bd.mass, bd.dofs);
   write_part(options.out + "/casing", casing.stiffness, casing.mass, casing.dofs);
   return 0;

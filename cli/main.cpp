@@ -4,8 +4,14 @@
 // Exit status: 0 success, 2 bad input (case file, option, output
 // directory), 3 numerical failure, 1 anything else.
 
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -17,114 +23,254 @@
 #include "reduced_integrator.hpp"
 #include "reference_run.hpp"
 
+namespace {
+
+// Option checks run by CLI11 on the text of a value, before its conversion,
+// so a bad value gets one message naming the option (CLI11 prefixes its
+// name) and what is allowed, instead of CLI11's bare "Could not convert".
+
+/// An integer in [lo, hi]; `allowed` describes the range in words.
+CLI::Validator integer_in(long lo, long hi, const std::string& allowed) {
+  return CLI::Validator(
+      [lo, hi, allowed](std::string& text) -> std::string {
+        errno = 0;
+        char* end = nullptr;
+        const long value = std::strtol(text.c_str(), &end, 10);
+        if (text.empty() || *end != '\0' || errno == ERANGE || value < lo || value > hi)
+          return "must be " + allowed + ", got '" + text + "'";
+        return {};
+      },
+      "INT");
+}
+
+/// A finite number above `lo`.
+CLI::Validator number_above(double lo, const std::string& allowed) {
+  return CLI::Validator(
+      [lo, allowed](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > lo))
+          return "must be " + allowed + ", got '" + text + "'";
+        return {};
+      },
+      "NUMBER");
+}
+
+/// One of `names`.
+CLI::Validator one_of(const std::vector<std::string>& names) {
+  std::string allowed;
+  for (size_t i = 0; i < names.size(); ++i)
+    allowed += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return CLI::Validator(
+      [names, allowed](std::string& text) -> std::string {
+        for (const std::string& name : names)
+          if (text == name) return {};
+        return "must be " + allowed + ", got '" + text + "'";
+      },
+      "NAME");
+}
+
+/// A path that must not be empty (`--out ""` would put files at the root).
+CLI::Validator nonempty_path() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        return path.empty() ? "must be a directory path that can be created and written, got ''"
+                            : std::string();
+      },
+      "DIR");
+}
+
+/// The case file argument: an existing file, not a directory (load_case
+/// reports a file it cannot read, and everything about its content).
+CLI::Validator case_file() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        std::error_code error;
+        const auto status = std::filesystem::status(path, error);
+        if (!std::filesystem::exists(status))
+          return "'" + path + "': no such file; must be a JSON case file";
+        if (std::filesystem::is_directory(status))
+          return "'" + path + "' is a directory; must be a JSON case file";
+        return {};
+      },
+      "CASE");
+}
+
+/// Name of the subcommand on the command line, for the --help hint.
+std::string help_hint(const CLI::App& app) {
+  const std::vector<CLI::App*> parsed = app.get_subcommands();
+  return parsed.empty() ? "rsi --help" : "rsi " + parsed.front()->get_name() + " --help";
+}
+
+/// For "NAME is required": ": " and the description of option NAME (what it takes).
+std::string required_allowed(const CLI::App& app, const std::string& message) {
+  for (const CLI::App* sub : app.get_subcommands())
+    for (const CLI::Option* option : sub->get_options())
+      if (message == option->get_name() + " is required") return ": " + option->get_description();
+  return {};
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
   app.require_subcommand(0, 1);
 
+  const std::string modes_allowed =
+      "an integer in [0, the method's maximum] (cb, ccm: the dofs minus the 44 boundary dofs, "
+      "638 for the default case; guyan: 0)";
+
   rsi::ModesOptions modes;
   CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one part -> DIR/modes.csv");
-  modes_cmd->add_option("case", modes.case_path, "case file (JSON)")->required();
-  modes_cmd->add_option("--part", modes.part, "bladed-disk or casing")->capture_default_str();
+  modes_cmd->add_option("case", modes.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  modes_cmd->add_option("--part", modes.part, "bladed-disk or casing")
+      ->capture_default_str()
+      ->check(one_of({"bladed-disk", "casing"}));
   modes_cmd->add_option("--count", modes.count, "number of modes, 1..number of dofs")
-      ->capture_default_str();
-  modes_cmd->add_option("--out", modes.out, "output directory")->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(1, 1000000000, "an integer in [1, the part's number of dofs]"));
+  modes_cmd->add_option("--out", modes.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
 
   rsi::ExportOptions export_options;
   CLI::App* export_cmd = app.add_subcommand(
       "export", "K.mtx, M.mtx, dofs.csv of both parts -> DIR/{bladed-disk,casing}/");
-  export_cmd->add_option("case", export_options.case_path, "case file (JSON)")->required();
-  export_cmd->add_option("--out", export_options.out, "output directory")->capture_default_str();
+  export_cmd->add_option("case", export_options.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  export_cmd->add_option("--out", export_options.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
 
   rsi::CalibrateOptions calibrate;
   CLI::App* calibrate_cmd = app.add_subcommand(
       "calibrate", "Blade thickness that centres the first family of frequencies on a target");
-  calibrate_cmd->add_option("case", calibrate.case_path, "case file (JSON)")->required();
-  calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz]")
-      ->capture_default_str();
+  calibrate_cmd->add_option("case", calibrate.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  calibrate_cmd->add_option("--target-hz", calibrate.target_hz, "target mean frequency [Hz], > 0")
+      ->capture_default_str()
+      ->check(number_above(0.0, "a finite number of Hz above 0"));
 
   rsi::SimulateOptions simulate;
   CLI::App* simulate_cmd = app.add_subcommand(
       "simulate", "One contact run -> DIR/history.csv, DIR/summary.json (exit 3 on blow-up)");
-  simulate_cmd->add_option("case", simulate.case_path, "case file (JSON)")->required();
+  simulate_cmd->add_option("case", simulate.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
   simulate_cmd->add_option("--method", simulate.method, "full (reference), cb, ccm or guyan")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(one_of({"full", "cb", "ccm", "guyan"}));
   simulate_cmd->add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(0, 1000000000, modes_allowed));
   simulate_cmd->add_flag(
       "--full-field", simulate.full_field,
       "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
-  simulate_cmd->add_option("--out", simulate.out, "output directory")->capture_default_str();
+  simulate_cmd->add_option("--out", simulate.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
   simulate_cmd->add_flag("--force", simulate.force,
                          "integrate even with a time step above the stability limit");
 
   rsi::ReduceOptions reduce;
   CLI::App* reduce_cmd = app.add_subcommand(
       "reduce", "Reduction basis of the bladed disk -> DIR/{K.mtx,M.mtx,T.mtx,basis.json}");
-  reduce_cmd->add_option("case", reduce.case_path, "case file (JSON)")->required();
-  reduce_cmd->add_option("--method", reduce.method, "cb, ccm or guyan")->required();
+  reduce_cmd->add_option("case", reduce.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  reduce_cmd->add_option("--method", reduce.method, "cb, ccm or guyan")
+      ->required()
+      ->check(one_of({"cb", "ccm", "guyan"}));
   reduce_cmd->add_option("--modes", reduce.modes, "fixed-interface (cb) or free (ccm) modes")
-      ->capture_default_str();
-  reduce_cmd->add_option("--out", reduce.out, "output directory")->capture_default_str();
+      ->capture_default_str()
+      ->check(integer_in(0, 1000000000, modes_allowed));
+  reduce_cmd->add_option("--out", reduce.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
 
   rsi::CampaignOptions campaign;
   CLI::App* campaign_cmd = app.add_subcommand(
       "campaign",
       "Reference + every reduced run of the case's campaign -> DIR/convergence.csv, DIR/runs/*/");
-  campaign_cmd->add_option("case", campaign.case_path, "case file (JSON)")->required();
-  campaign_cmd->add_option("--out", campaign.out, "output directory")->capture_default_str();
+  campaign_cmd->add_option("case", campaign.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  campaign_cmd->add_option("--out", campaign.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
   campaign_cmd->add_option("--jobs", campaign.jobs, "runs in parallel (threads), 1..64")
-      ->capture_default_str();
-  campaign_cmd->add_option("--target-e2", campaign.target_e2,
-                           "report the smallest eta and psi of the campaign with e2 at most this");
+      ->capture_default_str()
+      ->check(integer_in(1, 64, "an integer in [1, 64]"));
+  campaign_cmd
+      ->add_option("--target-e2", campaign.target_e2,
+                   "report the smallest eta and psi of the campaign with e2 at most this")
+      ->check(number_above(0.0, "a finite number above 0"));
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; every malformed command line exits 2.
-    const int status = app.exit(e);
-    return status == 0 ? 0 : 2;
+    // Every malformed command line: one line, exit 2.
+    std::fprintf(stderr, "rsi: error: %s%s (%s lists the options)\n", e.what(),
+                 required_allowed(app, e.what()).c_str(), help_hint(app).c_str());
+    return 2;
   }
 
   if (app.get_subcommands().empty()) {
-    std::fprintf(
-        stderr,
-        "rsi: error: a subcommand is required: modes, export or calibrate (see rsi --help)\n");
+    std::fprintf(stderr, "rsi: error: a subcommand is required: modes, export, calibrate, "
+                         "reduce, simulate or campaign (see rsi --help)\n");
     return 2;
   }
-  try {
-    if (*modes_cmd) return rsi::run_modes(modes);
-    if (*export_cmd) return rsi::run_export(export_options);
-    if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
-    if (*simulate_cmd) return rsi::run_simulate(simulate);
-    if (*reduce_cmd) return rsi::run_reduce(reduce);
-    if (*campaign_cmd) return rsi::run_campaign(campaign);
-  } catch (const rsi::CaseError& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
-    return 2;
-  } catch (const rsi::UsageError& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
-    return 2;
-  } catch (const rsi::OutputError& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
-    return 2;
-  } catch (const rsi::ReductionError& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
-    return 2;
-  } catch (const rsi::ReducedIntegrationError& e) {
-    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-    return 3;
-  } catch (const rsi::StabilityError& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
-    return 2;
-  } catch (const rsi::IntegrationError& e) {
-    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-    return 3;
-  } catch (const rsi::ModalError& e) {
-    std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-    return 3;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "rsi: error: %s\n", e.what());
+  // Status of the subcommand: the exception kinds map to exit 2 (bad input) or 3 (numerical).
+  auto run = [&]() -> int {
+    try {
+      if (*modes_cmd) return rsi::run_modes(modes);
+      if (*export_cmd) return rsi::run_export(export_options);
+      if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
+      if (*simulate_cmd) return rsi::run_simulate(simulate);
+      if (*reduce_cmd) return rsi::run_reduce(reduce);
+      if (*campaign_cmd) return rsi::run_campaign(campaign);
+    } catch (const rsi::CaseError& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 2;
+    } catch (const rsi::UsageError& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 2;
+    } catch (const rsi::OutputError& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 2;
+    } catch (const rsi::ReductionError& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 2;
+    } catch (const rsi::ReducedIntegrationError& e) {
+      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+      return 3;
+    } catch (const rsi::StabilityError& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 2;
+    } catch (const rsi::IntegrationError& e) {
+      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+      return 3;
+    } catch (const rsi::ModalError& e) {
+      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+      return 3;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "rsi: error: %s\n", e.what());
+      return 1;
+    }
     return 1;
-  }
-  return 1;
+  };
+  const int status = run();
+  // A failed command leaves no output directory it created and left empty.
+  if (status != 0) rsi::remove_empty_output_directories();
+  return status;
 }

@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <unistd.h>
+#include <vector>
 
 #include <unsupported/Eigen/SparseExtra>
 
@@ -25,12 +27,49 @@ void commit(const std::string& temporary, const std::string& path) {
 
 } // namespace
 
+namespace {
+
+std::mutex created_mutex;
+std::vector<std::filesystem::path> created; ///< by make_output_directory, parents first
+
+} // namespace
+
 void make_output_directory(const std::string& dir, const std::string& option) {
+  const std::string allowed = "; --out must name a directory that can be created and written";
+  if (dir.empty()) throw OutputError(option + ": empty path" + allowed);
+  // The directories about to be created, parents first.
+  std::vector<std::filesystem::path> missing;
   std::error_code error;
+  for (std::filesystem::path p = std::filesystem::absolute(dir, error).lexically_normal();
+       !p.empty() && !std::filesystem::exists(p, error); p = p.parent_path()) {
+    missing.insert(missing.begin(), p);
+    if (p == p.parent_path()) break;
+  }
   std::filesystem::create_directories(dir, error);
+  {
+    const std::lock_guard<std::mutex> lock(created_mutex);
+    for (const std::filesystem::path& p : missing)
+      if (std::filesystem::is_directory(p)) created.push_back(p);
+  }
   if (error || !std::filesystem::is_directory(dir))
     throw OutputError(option + " " + dir + ": cannot create the output directory (" +
-                      (error ? error.message() : "not a directory") + ")");
+                      (error ? error.message() : "not a directory") + ")" + allowed);
+  // Permissions alone do not tell (root, read-only mounts): try a file.
+  const std::string probe = dir + "/.rsi-probe" + std::to_string(::getpid());
+  const bool writable = static_cast<bool>(std::ofstream(probe, std::ios::binary));
+  std::filesystem::remove(probe, error);
+  if (!writable)
+    throw OutputError(option + " " + dir + ": cannot create a file in the output directory" +
+                      allowed);
+}
+
+void remove_empty_output_directories() {
+  const std::lock_guard<std::mutex> lock(created_mutex);
+  for (auto p = created.rbegin(); p != created.rend(); ++p) {
+    std::error_code error;
+    if (std::filesystem::is_empty(*p, error)) std::filesystem::remove(*p, error);
+  }
+  created.clear();
 }
 
 void write_text_file(const std::string& path, const std::string& content) {

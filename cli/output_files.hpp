@@ -16,8 +16,15 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// Creates `dir` (and parents); throws OutputError naming `option`.
+/// Creates `dir` (and parents) and checks that a file can be created in it
+/// (a probe file, removed at once); throws OutputError naming `option` and
+/// the directory. The directories it creates are remembered for
+/// remove_empty_output_directories.
 void make_output_directory(const std::string& dir, const std::string& option);
+
+/// After a failure: removes the directories make_output_directory created
+/// that are still empty, deepest first (a directory holding a file stays).
+void remove_empty_output_directories();
 
 void write_text_file(const std::string& path, const std::string& content);
 

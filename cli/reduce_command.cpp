@@ -13,6 +13,8 @@
 namespace rsi {
 
 int run_reduce(const ReduceOptions& options) {
+  if (options.method != "cb" && options.method != "ccm" && options.method != "guyan")
+    throw UsageError("--method: must be cb, ccm or guyan, got '" + options.method + "'");
   const Case c = load_case(options.case_path);
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, options.method, options.modes);
