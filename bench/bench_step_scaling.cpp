@@ -48,7 +48,7 @@ void full_step(benchmark::State& state) {
   f.tail(casing.n_dofs()) = rsi::casing_forcing(casing, c.forcing);
   cd.start(f);
   for (auto _ : state)
-    benchmark::DoNotOptimize(cd.step(f));
+    benchmark::DoNotOptimize(cd.step());
   const int n = bd.n_dofs() + casing.n_dofs();
   const double flops = cd.flops_per_step(); // counted by the integrator
   state.counters["dofs"] = n;

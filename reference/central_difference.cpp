@@ -28,6 +28,7 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
   m_position =
       p.size() > 0 ? p.indices() : Eigen::VectorXi::LinSpaced(mass.rows(), 0, mass.rows() - 1);
   m_inverse_diagonal = m_mass_factor.vectorD().cwiseInverse();
+  m_l_rows = m_mass_factor.matrixL();
   if (p.size() > 0) {
     m_k = Eigen::SparseMatrix<double>(p * stiffness * p.inverse());
     m_m = Eigen::SparseMatrix<double>(p * mass * p.inverse());
@@ -38,16 +39,20 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
 }
 
 void CentralDifference::apply_inverse_mass(Eigen::VectorXd& r) const {
-  m_mass_factor.matrixL().solveInPlace(r);
+  m_l_rows.triangularView<Eigen::UnitLower>().solveInPlace(r);
   r.array() *= m_inverse_diagonal.array();
   m_mass_factor.matrixU().solveInPlace(r);
 }
 
-void CentralDifference::to_physical(const Eigen::VectorXd& permuted,
-                                    Eigen::VectorXd& physical) const {
+void CentralDifference::to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
+                                    Eigen::VectorXd& velocity) const {
   physical.resize(permuted.size());
-  for (Eigen::Index i = 0; i < permuted.size(); ++i)
+  velocity.resize(permuted.size());
+  const double rate = 1.0 / m_dt;
+  for (Eigen::Index i = 0; i < permuted.size(); ++i) {
     physical(i) = permuted(m_position(i));
+    velocity(i) = (physical(i) - m_x(i)) * rate;
+  }
 }
 
 const Eigen::VectorXd& CentralDifference::inverse_mass_column(int dof) {
@@ -90,12 +95,19 @@ double CentralDifference::energy() const {
   return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_ku);
 }
 
+void CentralDifference::set_force(const Eigen::Ref<const Eigen::VectorXd>& f) {
+  if (f.size() != m_m.rows())
+    throw std::invalid_argument("CentralDifference: the force must have one entry per dof");
+  m_force.resize(f.size());
+  for (Eigen::Index i = 0; i < f.size(); ++i)
+    m_force(m_position(i)) = f(i);
+  m_forced = m_force.any();
+}
+
 void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   const int n = static_cast<int>(m_m.rows());
   m_n = 0;
-  m_force.resize(n);
-  for (int i = 0; i < n; ++i)
-    m_force(m_position(i)) = f0(i);
+  set_force(f0);
   m_u = Eigen::VectorXd::Zero(n);
   m_u_prev = 0.5 * m_dt * m_dt * m_force;
   apply_inverse_mass(m_u_prev);
@@ -173,20 +185,16 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
                          std::to_string(m_n + 1));
 }
 
-StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n) {
+StepReport CentralDifference::step() {
   const double dt2 = m_dt * m_dt;
-  const Eigen::Index n = m_u.size();
-  bool forced = false;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    m_force(m_position(i)) = f_n(i);
-    forced = forced || f_n(i) != 0.0;
-  }
-  m_predicted = m_force - m_ku;
+  if (m_forced)
+    m_predicted = m_force - m_ku;
+  else
+    m_predicted = -m_ku;
   apply_inverse_mass(m_predicted);
   m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
   const double t_next = (m_n + 1) * m_dt;
-  to_physical(m_predicted, m_x_next);
-  m_velocity = (m_x_next - m_x) / m_dt;
+  to_physical(m_predicted, m_x_next, m_velocity);
   m_law.evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
   const ContactState& s = m_predicted_state;
   m_lambda = solve_active_set(s, m_correction);
@@ -195,7 +203,7 @@ StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n)
   // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T;
   // m_predicted becomes u_{n+1}.
   if (corrected) m_predicted += m_correction;
-  if (forced) m_external_work += 0.5 * (m_force.dot(m_predicted) - m_force.dot(m_u_prev));
+  if (m_forced) m_external_work += 0.5 * (m_force.dot(m_predicted) - m_force.dot(m_u_prev));
   for (int k = 0; k < m_lambda.size(); ++k)
     if (m_lambda(k) != 0.0)
       m_contact_work +=
@@ -210,8 +218,7 @@ StepReport CentralDifference::step(const Eigen::Ref<const Eigen::VectorXd>& f_n)
   // Monitors at the corrected state (SPEC V5).
   // Without a correction u_{n+1} is the prediction: same gaps, same velocities.
   if (corrected) {
-    to_physical(m_u, m_x_next);
-    m_velocity = (m_x_next - m_x) / m_dt;
+    to_physical(m_u, m_x_next, m_velocity);
     m_law.evaluate(m_x_next, m_velocity, t_next, m_state);
   }
   m_x.swap(m_x_next);

@@ -56,8 +56,11 @@ public:
 
   /// Start from rest under the force f0 at t = 0.
   void start(const Eigen::Ref<const Eigen::VectorXd>& f0);
-  /// Advance from t_n to t_{n+1} under the external force f_n (at t_n).
-  StepReport step(const Eigen::Ref<const Eigen::VectorXd>& f_n);
+  /// The external force F_n of the following steps (held until changed:
+  /// a piecewise constant force costs nothing per step).
+  void set_force(const Eigen::Ref<const Eigen::VectorXd>& f);
+  /// Advance from t_n to t_{n+1} under the force set.
+  StepReport step();
 
   int step_index() const { return m_n; } ///< n of the current u_n
   double time() const { return m_n * m_dt; }
@@ -82,8 +85,9 @@ private:
   double permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const;
   /// r <- M'^-1 r through the factors of P M P^T.
   void apply_inverse_mass(Eigen::VectorXd& r) const;
-  /// physical <- P^T permuted.
-  void to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical) const;
+  /// physical <- P^T permuted, velocity <- (physical - u_n) / dt.
+  void to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
+                   Eigen::VectorXd& velocity) const;
   Eigen::VectorXd solve_active_set(const ContactState& predicted, Eigen::VectorXd& correction);
 
   using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>; // faster products
@@ -92,8 +96,11 @@ private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mass_factor;
   Eigen::VectorXi m_position;         ///< u'(m_position(i)) = u(i)
   Eigen::VectorXd m_inverse_diagonal; ///< D^-1
-  RowMajorMatrix m_k;                 ///< K'
-  RowMajorMatrix m_m;                 ///< M'
+  /// L stored by rows: its forward solve is then a dot product per row, not
+  /// an update per column with a test for zero (L has ~4 entries a column).
+  Eigen::SparseMatrix<double, Eigen::RowMajor> m_l_rows;
+  RowMajorMatrix m_k; ///< K'
+  RowMajorMatrix m_m; ///< M'
   std::vector<Eigen::VectorXd> m_inverse_columns;
   /// The same columns without their zeros: M is block diagonal (bladed
   /// disk, casing), so a casing column has 156 nonzeros of 838.
@@ -105,7 +112,8 @@ private:
   Eigen::VectorXd m_u_prev;
   Eigen::VectorXd m_ku; ///< K' u'_n
   // Work storage, kept to avoid allocations in the step loop.
-  Eigen::VectorXd m_force;
+  Eigen::VectorXd m_force; ///< F' = P F
+  bool m_forced = false;   ///< F != 0
   Eigen::VectorXd m_predicted;
   Eigen::VectorXd m_correction;
   // Physical coordinates, for the contact law.

@@ -50,10 +50,15 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
                      cd.displacement().tail(casing.n_dofs())};
   };
   const Clock::time_point integration_start = Clock::now();
-  cd.start(forcing_active(c.forcing, 0.0, s.dt) ? forcing : no_force);
+  bool forced = forcing_active(c.forcing, 0.0, s.dt);
+  cd.start(forced ? forcing : no_force);
   monitor.start(state(), cd.initial_energy());
   for (int n = 0; n < s.steps_requested; ++n) {
-    const StepReport r = cd.step(forcing_active(c.forcing, n * s.dt, s.dt) ? forcing : no_force);
+    if (forcing_active(c.forcing, n * s.dt, s.dt) != forced) {
+      forced = !forced;
+      cd.set_force(forced ? forcing : no_force);
+    }
+    const StepReport r = cd.step();
     if (!monitor.after_step(r, state(), [&]() { return cd.energy(); })) break;
   }
   monitor.finish(seconds_since(integration_start), seconds_since(start));

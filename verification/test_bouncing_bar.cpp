@@ -102,7 +102,7 @@ BarRun run_bar(int n, double cfl, double periods) {
   BarRun run;
   double max_energy = std::abs(cd.initial_energy());
   for (int i = 0; i < steps; ++i) {
-    const StepReport r = cd.step(f);
+    const StepReport r = cd.step();
     run.max_penetration = std::max(run.max_penetration, r.max_penetration);
     run.min_lambda = std::min(run.min_lambda, r.min_lambda);
     run.max_error =
