@@ -129,7 +129,7 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
     active[k] = s.gap(k) < 0.0;
   Eigen::VectorXd lambda = Eigen::VectorXd::Zero(nc);
   if (std::none_of(active.begin(), active.end(), [](bool a) { return a; })) return lambda;
-  // W_ij = dt^2 G_i M^-1 D_j^T for every pair met, computed once per step.
+  // W_ij = dt^2 G_i M^-1 D_j^T for the active pairs met, computed once per step.
   Eigen::MatrixXd w = Eigen::MatrixXd::Constant(nc, nc, std::nan(""));
   auto entry = [&](int i, int j) {
     if (std::isnan(w(i, j))) w(i, j) = contact_flexibility(s.gradient[i], s.direction[j]);
@@ -159,26 +159,22 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
       active[idx[most_negative]] = false;
       continue;
     }
-    // A constraint the correction would close joins the active set:
-    // g_k + G_k dt^2 M^-1 D^T lambda = g_k + sum_j W_kj lambda_j.
-    bool added = false;
-    for (int k = 0; k < nc; ++k) {
-      if (active[k]) continue;
-      double closed = s.gap(k);
-      for (int b = 0; b < na; ++b)
-        closed += entry(k, idx[b]) * la(b);
-      if (closed < 0.0) active[k] = added = true;
-    }
-    if (added) continue;
     // u_{n+1} - u~ = dt^2 M^-1 sum_j lambda_j D_j^T.
     correction.setZero(m_m.rows());
-    for (int b = 0; b < na; ++b) {
-      lambda(idx[b]) = la(b);
+    for (int b = 0; b < na; ++b)
       for (const auto& [dof, c] : s.direction[idx[b]]) {
         inverse_mass_column(dof); // fills the sparse column
         correction += (m_dt * m_dt * la(b) * c) * m_sparse_inverse_columns[dof];
       }
-    }
+    // A constraint the correction would close joins the active set:
+    // g_k + G_k (u_{n+1} - u~) = g_k + sum_j W_kj lambda_j < 0.
+    bool added = false;
+    for (int k = 0; k < nc; ++k)
+      if (!active[k] && s.gap(k) + permuted_dot(s.gradient[k], correction) < 0.0)
+        active[k] = added = true;
+    if (added) continue;
+    for (int b = 0; b < na; ++b)
+      lambda(idx[b]) = la(b);
     return lambda;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
