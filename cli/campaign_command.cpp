@@ -9,6 +9,10 @@
 #include <sstream>
 #include <thread>
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "bladed_disk.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
@@ -39,6 +43,22 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
         (best < 0 || runs[i].run.modes < best))
       best = runs[i].run.modes;
   return best;
+}
+
+/// Runs the report generator on the campaign directory; its exit status.
+int make_report(const std::string& dir) {
+  const std::string python = "/usr/bin/python3";
+  const std::string script = std::string(RSI_REPORTS_DIR) + "/make_campaign_report.py";
+  std::vector<std::string> args{python, script, dir};
+  std::vector<char*> argv;
+  for (std::string& a : args)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
 } // namespace
@@ -119,6 +139,11 @@ int run_campaign(const CampaignOptions& options) {
         << reference.summary.wall_seconds / r.result.summary.wall_seconds << "\n";
   }
   write_text_file(options.out + "/convergence.csv", csv.str());
+  // Paper Fig. 3 analogue: the lowest 8 families of the bladed disk.
+  const int disk_dofs = assemble_bladed_disk(c).n_dofs();
+  write_text_file(
+      options.out + "/modes-bladed-disk.csv",
+      modes_table(c, "bladed-disk", std::min(8 * c.bladed_disk.n_blades, disk_dofs)).csv);
 
   std::printf("%-6s %6s %10s %10s %9s %8s\n", "method", "modes", "e2", "e_inf", "wall_s",
               "speedup");
@@ -145,6 +170,18 @@ int run_campaign(const CampaignOptions& options) {
               options.out.c_str(), options.out.c_str());
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const CampaignResult& r) { return r.error.empty(); });
+  if (options.report) {
+    const int status = make_report(options.out);
+    if (status != 0) {
+      std::fprintf(
+          stderr,
+          "rsi: error: the report generator %s/make_campaign_report.py failed (status %d); "
+          "the runs and convergence.csv are written; rerun it by hand or use --no-report\n",
+          RSI_REPORTS_DIR, status);
+      return 1;
+    }
+    std::printf("report: %s/report.md\n", options.out.c_str());
+  }
   return all_ok ? 0 : 3;
 }
 

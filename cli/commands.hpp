@@ -5,6 +5,10 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "case_file.hpp"
+#include "modal_analysis.hpp"
 
 namespace rsi {
 
@@ -52,7 +56,19 @@ struct CampaignOptions {
   std::string out = "out/campaign";
   int jobs = 2;
   double target_e2 = 0.0; ///< report the smallest eta, psi reaching it (0: no)
+  bool report = true;     ///< run reports/make_campaign_report.py at the end
 };
+
+/// The lowest `count` modes of a part ("bladed-disk" or "casing") and their
+/// modes.csv text (index,frequency_hz,nodal_diameter). Throws UsageError
+/// unless 1 <= count <= the part's dofs.
+struct ModesTable {
+  Modes modes;
+  std::vector<int> diameters;
+  std::string csv;
+  int n_dofs = 0;
+};
+ModesTable modes_table(const Case& c, const std::string& part, int count);
 
 int run_modes(const ModesOptions& options);
 int run_export(const ExportOptions& options);

@@ -209,6 +209,8 @@ int main(int argc, char** argv) {
       ->add_option("--target-e2", campaign.target_e2,
                    "report the smallest eta and psi of the campaign with e2 at most this")
       ->check(number_above(0.0, "a finite number above 0"));
+  campaign_cmd->add_flag("!--no-report", campaign.report,
+                         "skip the report (reports/make_campaign_report.py, python3 + matplotlib)");
 
   try {
     app.parse(argc, argv);

@@ -40,26 +40,33 @@ Part load_part(const Case& c, const std::string& name) {
 
 } // namespace
 
-int run_modes(const ModesOptions& options) {
-  const Case c = load_case(options.case_path);
-  const Part part = load_part(c, options.part);
+ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
+  const Part part = load_part(c, part_name);
   const int n = static_cast<int>(part.stiffness.rows());
-  if (options.count < 1 || options.count > n)
-    throw UsageError("--count: must be in [1, " + std::to_string(n) + "] for part " + options.part +
-                     " (its number of dofs), got " + std::to_string(options.count));
-  make_output_directory(options.out, "--out");
-
-  const Modes modes = lowest_modes(part.stiffness, part.mass, options.count);
+  if (count < 1 || count > n)
+    throw UsageError("--count: must be in [1, " + std::to_string(n) + "] for part " + part_name +
+                     " (its number of dofs), got " + std::to_string(count));
+  ModesTable table{lowest_modes(part.stiffness, part.mass, count), {}, {}, n};
   std::ostringstream csv;
   csv << "index,frequency_hz,nodal_diameter\n";
   csv.precision(12);
-  std::vector<int> diameters;
-  for (int i = 0; i < modes.n_modes(); ++i) {
-    diameters.push_back(part.label(modes.shapes.col(i)));
-    csv << i + 1 << "," << modes.frequency_hz(i) << "," << diameters.back() << "\n";
+  for (int i = 0; i < table.modes.n_modes(); ++i) {
+    table.diameters.push_back(part.label(table.modes.shapes.col(i)));
+    csv << i + 1 << "," << table.modes.frequency_hz(i) << "," << table.diameters.back() << "\n";
   }
+  table.csv = csv.str();
+  return table;
+}
+
+int run_modes(const ModesOptions& options) {
+  const Case c = load_case(options.case_path);
+  const ModesTable table = modes_table(c, options.part, options.count);
+  const Modes& modes = table.modes;
+  const std::vector<int>& diameters = table.diameters;
+  const int n = table.n_dofs;
+  make_output_directory(options.out, "--out");
   const std::string path = options.out + "/modes.csv";
-  write_text_file(path, csv.str());
+  write_text_file(path, table.csv);
 
   std::printf("%s: %s, %d dofs\n", c.source.c_str(), options.part.c_str(), n);
   std::printf(

@@ -3,7 +3,9 @@
 # campaign --jobs 1` and `--jobs 2` on the same case must write the same
 # e2 and e_inf in convergence.csv (method, modes, e2, e_inf; wall_s and
 # speedup are timings) and byte-identical runs/*/history.csv. A short case
-# (5 ms) with a small campaign (cb 0 and 10, ccm 0) keeps it quick.
+# (5 ms) with a small campaign (cb 0 and 10, ccm 0) keeps it quick. The
+# parallel campaign also writes its report (reports/make_campaign_report.py),
+# which must produce report.md and every figure it links.
 # Usage: campaign_parallel_equals_serial.sh RSI SOURCE_DIR
 set -u
 rsi=$1
@@ -18,7 +20,9 @@ d["campaign"] = [{"method": "cb", "modes": [0, 10]}, {"method": "ccm", "modes": 
 json.dump(d, open(sys.argv[2], "w"), indent=2)
 PY
 for jobs in 1 2; do
-  if ! "$rsi" campaign "$work/short.json" --jobs $jobs --out "$work/jobs-$jobs" >"$work/log" 2>&1; then
+  report=--no-report
+  [ $jobs -eq 2 ] && report=
+  if ! "$rsi" campaign "$work/short.json" --jobs $jobs $report --out "$work/jobs-$jobs" >"$work/log" 2>&1; then
     echo "FAIL rsi campaign --jobs $jobs failed:"
     cat "$work/log"
     exit 1
@@ -43,4 +47,15 @@ for run in full-0 cb-0 cb-10 ccm-0; do
     failures=$((failures + 1))
   fi
 done
+# The report links only figures that exist.
+links=$(grep -o '([a-z0-9_]*\.png)' "$work/jobs-2/report.md" | tr -d '()')
+if [ -n "$links" ] && grep -q "Mode-count guidance" "$work/jobs-2/report.md"; then
+  for png in $links; do
+    [ -s "$work/jobs-2/$png" ] || { echo "FAIL report.md links $png, which was not written"; failures=$((failures + 1)); }
+  done
+  echo "ok   report.md written with $(echo "$links" | wc -w) figures"
+else
+  echo "FAIL report.md missing or without figures"
+  failures=$((failures + 1))
+fi
 [ "$failures" -eq 0 ]
