@@ -21,9 +21,9 @@ ReducedTipContact::ReducedTipContact(const BladedDisk& bladed_disk, const Reduce
   }
 }
 
-void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_rate,
-                                 const Eigen::VectorXd& c, const Eigen::VectorXd& c_rate, double t,
-                                 std::vector<TipContact>& out) const {
+void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_before,
+                                 const Eigen::VectorXd& c, const Eigen::VectorXd& c_before,
+                                 double dt, double t, std::vector<TipContact>& out) const {
   const int n_nodes = static_cast<int>(m_node_first.size());
   const double pitch = 2.0 * M_PI / n_nodes;
   out.resize(m_q_u.size());
@@ -44,10 +44,11 @@ void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd
       tip.c_v[a] = first < 0 ? -1 : first + 2 + a % 2;
       if (first < 0) continue;
       u_casing += n(a) * c(tip.c_u[a]);
-      v_casing_rate += n(a) * c_rate(tip.c_v[a]);
+      v_casing_rate += n(a) * ((c(tip.c_v[a]) - c_before(tip.c_v[a])) / dt);
     }
     tip.gap = m_casing_radius + u_casing - m_tip_radius - q(tip.q_u);
-    tip.sliding = m_omega * (m_tip_radius + q(tip.q_u)) + q_rate(tip.q_v) - v_casing_rate;
+    tip.sliding = m_omega * (m_tip_radius + q(tip.q_u)) + (q(tip.q_v) - q_before(tip.q_v)) / dt -
+                  v_casing_rate;
     tip.sign = m_mu > 0.0 ? static_cast<double>((tip.sliding > 0.0) - (tip.sliding < 0.0)) : 0.0;
   }
 }

@@ -42,9 +42,14 @@ public:
   int n_tips() const { return static_cast<int>(m_q_u.size()); }
   double friction_coefficient() const { return m_mu; }
 
-  /// All tips at reduced state (q, q') and casing state (c, c') at time t.
-  void evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_rate, const Eigen::VectorXd& c,
-                const Eigen::VectorXd& c_rate, double t, std::vector<TipContact>& out) const;
+  /// All tips at reduced state q and casing state c at time t, the rates
+  /// being the backward differences q' = (q - q_before) / dt and
+  /// c' = (c - c_before) / dt, formed only at the entries a tip reads (no
+  /// temporaries: this runs once or twice per step). `out` is resized to
+  /// n_tips() and reused.
+  void evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& q_before, const Eigen::VectorXd& c,
+                const Eigen::VectorXd& c_before, double dt, double t,
+                std::vector<TipContact>& out) const;
 
 private:
   std::vector<int> m_q_u;

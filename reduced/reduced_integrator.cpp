@@ -1,7 +1,5 @@
 #include "reduced_integrator.hpp"
 
-#include <Eigen/LU>
-
 namespace rsi {
 
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
@@ -24,32 +22,55 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     throw ReducedIntegrationError(
         "reduced integrator: the casing mass matrix is not positive definite");
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
+  const int nc = casing.n_dofs();
+  m_mc_order.resize(nc);
+  for (int i = 0; i < nc; ++i)
+    m_mc_order[i] =
+        m_mc_factor.permutationP().size() > 0 ? m_mc_factor.permutationP().indices()(i) : i;
+  m_mc_inverse_d = m_mc_factor.vectorD().cwiseInverse();
+  if (!m_kc.isCompressed() || !m_mc_factor.matrixL().nestedExpression().isCompressed())
+    throw std::logic_error("reduced integrator: K_c and L_c are expected in compressed storage");
+  m_force = Eigen::VectorXd::Zero(nc);
+  m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
+  m_c_next = m_dc = m_casing_work = Eigen::VectorXd::Zero(nc);
 }
 
 double ReducedIntegrator::casing_flops_per_step() const {
   const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
   return 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l +
-         13.0 * static_cast<double>(m_kc.rows());
+         5.0 * static_cast<double>(m_kc.rows());
 }
 
 double ReducedIntegrator::flops_per_step() const {
   const auto r = static_cast<double>(m_kq.rows());
-  return 2.0 * r * r + 12.0 * r + casing_flops_per_step();
+  return 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
 }
 
 double ReducedIntegrator::energy() const {
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
+  const Eigen::VectorXd kc_c = m_kc * m_c;
   return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + 0.5 * vc.dot(m_mc * vc) +
-         0.5 * m_c_prev.dot(m_kc_c);
+         0.5 * m_c_prev.dot(kc_c);
 }
 
-void ReducedIntegrator::start(const Eigen::VectorXd& casing_force) {
+void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
+  if (casing_force.size() != m_force.size())
+    throw std::invalid_argument("ReducedIntegrator::set_force: the force has " +
+                                std::to_string(casing_force.size()) + " entries, the casing " +
+                                std::to_string(m_force.size()) + " dofs");
+  m_force = casing_force;
+  m_force_zero = (m_force.array() == 0.0).all();
+}
+
+void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
+  set_force(casing_force);
   m_n = 0;
   m_q = m_q_prev = Eigen::VectorXd::Zero(m_kq.rows());
-  m_c = m_kc_c = Eigen::VectorXd::Zero(m_kc.rows());
-  m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(casing_force);
-  m_contact.evaluate(m_q, m_q, m_c, m_c, 0.0, m_tips);
+  m_c = Eigen::VectorXd::Zero(m_kc.rows());
+  m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
+  m_contact.evaluate(m_q, m_q, m_c, m_c, m_dt, 0.0, m_tips);
+  m_predicted = m_tips;
   m_gap.resize(m_contact.n_tips());
   for (int k = 0; k < m_contact.n_tips(); ++k)
     m_gap(k) = m_tips[k].gap;
@@ -73,62 +94,69 @@ double ReducedIntegrator::flexibility(const TipContact& i, const TipContact& j) 
   return m_dt * m_dt * w;
 }
 
-double ReducedIntegrator::direction_dot(const TipContact& j, const Eigen::VectorXd& dq,
-                                        const Eigen::VectorXd& dc) const {
-  double sum = -dq(j.q_u) - m_mu * j.sign * dq(j.q_v);
+double ReducedIntegrator::direction_dot(const TipContact& j, const Eigen::VectorXd& q_a,
+                                        const Eigen::VectorXd& q_b, const Eigen::VectorXd& c_a,
+                                        const Eigen::VectorXd& c_b) const {
+  double sum = -(q_a(j.q_u) - q_b(j.q_u)) - m_mu * j.sign * (q_a(j.q_v) - q_b(j.q_v));
   for (int b = 0; b < 4; ++b)
-    if (j.c_u[b] >= 0) sum += j.shape[b] * (dc(j.c_u[b]) + m_mu * j.sign * dc(j.c_v[b]));
+    if (j.c_u[b] >= 0)
+      sum += j.shape[b] *
+             ((c_a(j.c_u[b]) - c_b(j.c_u[b])) + m_mu * j.sign * (c_a(j.c_v[b]) - c_b(j.c_v[b])));
   return sum;
 }
 
 void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
   const int nt = static_cast<int>(tips.size());
   m_lambda.setZero(nt);
-  std::vector<char> active(nt, 0);
   int n_active = 0;
   for (int k = 0; k < nt; ++k)
-    n_active += active[k] = tips[k].gap < 0.0;
+    n_active += tips[k].gap < 0.0;
   if (n_active == 0) return;
-  Eigen::MatrixXd w_all(nt, nt);
-  std::vector<char> known(nt * nt, 0);
+  m_active.resize(nt);
+  for (int k = 0; k < nt; ++k)
+    m_active[k] = tips[k].gap < 0.0;
+  m_w_all.resize(nt, nt);
+  m_known.assign(static_cast<size_t>(nt) * nt, 0);
   auto w = [&](int i, int j) {
-    if (!known[i * nt + j]) {
-      w_all(i, j) = flexibility(tips[i], tips[j]);
-      known[i * nt + j] = 1;
+    if (!m_known[i * nt + j]) {
+      m_w_all(i, j) = flexibility(tips[i], tips[j]);
+      m_known[i * nt + j] = 1;
     }
-    return w_all(i, j);
+    return m_w_all(i, j);
   };
   for (int round = 0; round < 2 * nt + 2; ++round) {
-    std::vector<int> set;
+    m_set.clear();
     for (int k = 0; k < nt; ++k)
-      if (active[k]) set.push_back(k);
-    const int m = static_cast<int>(set.size());
+      if (m_active[k]) m_set.push_back(k);
+    const int m = static_cast<int>(m_set.size());
     m_lambda.setZero(nt);
     if (m == 0) return;
-    Eigen::MatrixXd wa(m, m);
-    Eigen::VectorXd minus_gap(m);
+    m_wa.resize(m, m);
+    m_minus_gap.resize(m);
     for (int a = 0; a < m; ++a) {
-      minus_gap(a) = -tips[set[a]].gap;
+      m_minus_gap(a) = -tips[m_set[a]].gap;
       for (int b = 0; b < m; ++b)
-        wa(a, b) = w(set[a], set[b]);
+        m_wa(a, b) = w(m_set[a], m_set[b]);
     }
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(wa);
-    const Eigen::VectorXd la = lu.solve(minus_gap);
-    if (!la.allFinite() || (wa * la - minus_gap).norm() > 1e-8 * minus_gap.norm())
+    m_lu.compute(m_wa);
+    m_la = m_lu.solve(m_minus_gap);
+    m_residual.noalias() = m_wa * m_la;
+    m_residual -= m_minus_gap;
+    if (!m_la.allFinite() || m_residual.norm() > 1e-8 * m_minus_gap.norm())
       throw ReducedIntegrationError("reduced integrator: singular contact matrix W at step " +
                                     std::to_string(m_n + 1));
     bool changed = false;
     for (int a = 0; a < m; ++a)
-      if (la(a) < 0.0) active[set[a]] = 0, changed = true; // drop every negative multiplier
+      if (m_la(a) < 0.0) m_active[m_set[a]] = 0, changed = true; // drop every negative multiplier
     if (changed) continue;
     for (int a = 0; a < m; ++a)
-      m_lambda(set[a]) = la(a);
+      m_lambda(m_set[a]) = m_la(a);
     for (int k = 0; k < nt; ++k) { // constraints the correction would close
-      if (active[k]) continue;
+      if (m_active[k]) continue;
       double g = tips[k].gap;
       for (int a = 0; a < m; ++a)
-        g += w(k, set[a]) * la(a);
-      if (g < 0.0) active[k] = 1, changed = true;
+        g += w(k, m_set[a]) * m_la(a);
+      if (g < 0.0) m_active[k] = 1, changed = true;
     }
     if (!changed) return;
   }
@@ -136,24 +164,61 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
                                 std::to_string(m_n + 1));
 }
 
-StepReport ReducedIntegrator::step(const Eigen::VectorXd& casing_force) {
+void ReducedIntegrator::predict_casing() {
+  // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y, and
+  // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)). K_c c_n is formed row by
+  // row inside the gather; L is unit lower, stored by columns without its
+  // diagonal.
+  const int n = static_cast<int>(m_c.size());
   const double dt2 = m_dt * m_dt;
-  m_q_next.noalias() = 2.0 * m_q - m_q_prev - dt2 * (m_aq * m_q);
-  m_c_next = m_mc_factor.solve(casing_force - m_kc_c);
-  m_c_next = 2.0 * m_c - m_c_prev + dt2 * m_c_next;
+  double* y = m_casing_work.data();
+  const int* k_outer = m_kc.outerIndexPtr();
+  const int* k_inner = m_kc.innerIndexPtr();
+  const double* k_value = m_kc.valuePtr();
+  for (int i = 0; i < n; ++i) {
+    double kc = 0.0;
+    for (int p = k_outer[i]; p < k_outer[i + 1]; ++p)
+      kc += k_value[p] * m_c(k_inner[p]);
+    y[m_mc_order[i]] = m_force_zero ? -kc : m_force(i) - kc;
+  }
+  const Eigen::SparseMatrix<double>& l = m_mc_factor.matrixL().nestedExpression();
+  const int* l_outer = l.outerIndexPtr();
+  const int* l_inner = l.innerIndexPtr();
+  const double* l_value = l.valuePtr();
+  for (int j = 0; j < n; ++j) { // L y' = y, by columns
+    const double yj = y[j];
+    if (yj == 0.0) continue;
+    for (int p = l_outer[j]; p < l_outer[j + 1]; ++p)
+      y[l_inner[p]] -= yj * l_value[p];
+  }
+  for (int j = 0; j < n; ++j)
+    y[j] *= m_mc_inverse_d(j);
+  for (int j = n - 1; j >= 0; --j) { // L^T y' = y: row j of L^T is column j of L
+    double yj = y[j];
+    for (int p = l_outer[j]; p < l_outer[j + 1]; ++p)
+      yj -= l_value[p] * y[l_inner[p]];
+    y[j] = yj;
+  }
+  for (int j = 0; j < n; ++j)
+    m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * y[m_mc_order[j]];
+}
+
+StepReport ReducedIntegrator::step() {
+  const double dt2 = m_dt * m_dt;
+  m_q_next = 2.0 * m_q - m_q_prev;
+  m_q_next.noalias() -= dt2 * (m_aq * m_q);
+  predict_casing();
   const double t_next = (m_n + 1) * m_dt;
-  m_contact.evaluate(m_q_next, (m_q_next - m_q) / m_dt, m_c_next, (m_c_next - m_c) / m_dt, t_next,
-                     m_tips);
-  const std::vector<TipContact> predicted = m_tips;
-  solve_contact(predicted);
+  m_contact.evaluate(m_q_next, m_q, m_c_next, m_c, m_dt, t_next, m_predicted);
+  solve_contact(m_predicted);
 
   const bool corrected = m_lambda.any();
   if (corrected) {
-    m_dq.setZero(m_q.size());
-    m_dc.setZero(m_c.size());
+    m_dq.setZero();
+    m_dc.setZero();
     for (int j = 0; j < m_lambda.size(); ++j) {
       if (m_lambda(j) == 0.0) continue;
-      const TipContact& tip = predicted[j];
+      const TipContact& tip = m_predicted[j];
       const double f = dt2 * m_lambda(j);
       m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
       for (int b = 0; b < 4; ++b)
@@ -165,23 +230,28 @@ StepReport ReducedIntegrator::step(const Eigen::VectorXd& casing_force) {
     m_c_next += m_dc;
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
-  const Eigen::VectorXd span_q = m_q_next - m_q_prev;
-  const Eigen::VectorXd span_c = m_c_next - m_c_prev;
-  m_external_work += 0.5 * casing_force.dot(span_c);
+  if (!m_force_zero) {
+    m_casing_work = m_c_next - m_c_prev;
+    m_external_work += 0.5 * m_force.dot(m_casing_work);
+  }
   for (int j = 0; j < m_lambda.size(); ++j)
     if (m_lambda(j) != 0.0)
-      m_contact_work += 0.5 * m_lambda(j) * direction_dot(predicted[j], span_q, span_c);
+      m_contact_work +=
+          0.5 * m_lambda(j) * direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
 
   m_q_prev.swap(m_q);
   m_q.swap(m_q_next);
   m_c_prev.swap(m_c);
   m_c.swap(m_c_next);
-  m_kc_c.noalias() = m_kc * m_c;
   ++m_n;
 
-  StepReport report;
+  // The tips at the new state: those predicted unless a correction moved it
+  // (then m_predicted keeps the predicted signs compared below).
   if (corrected)
-    m_contact.evaluate(m_q, (m_q - m_q_prev) / m_dt, m_c, (m_c - m_c_prev) / m_dt, t_next, m_tips);
+    m_contact.evaluate(m_q, m_q_prev, m_c, m_c_prev, m_dt, t_next, m_tips);
+  else
+    m_tips.swap(m_predicted);
+  StepReport report;
   for (int k = 0; k < m_lambda.size(); ++k) {
     const double g = m_tips[k].gap;
     const double l = m_lambda(k);
@@ -191,10 +261,10 @@ StepReport ReducedIntegrator::step(const Eigen::VectorXd& casing_force) {
     report.max_complementarity = std::max(report.max_complementarity, std::abs(l * g));
     if (l == 0.0) continue;
     ++report.n_active;
-    if (m_mu > 0.0 && m_tips[k].sign != predicted[k].sign) {
+    if (m_mu > 0.0 && m_tips[k].sign != m_predicted[k].sign) {
       ++report.sliding_reversals;
       report.max_friction_residual = std::max(
-          report.max_friction_residual, m_mu * l * std::abs(m_tips[k].sign - predicted[k].sign));
+          report.max_friction_residual, m_mu * l * std::abs(m_tips[k].sign - m_predicted[k].sign));
     }
   }
   return report;

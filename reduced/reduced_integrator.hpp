@@ -11,7 +11,14 @@
 //   the correction added, until both hold;
 //   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
 // M^-1 (r x r) and M_c^-1 (dense, 4 dofs per casing node) are formed once
-// from Cholesky factorizations whose status is checked.
+// from Cholesky factorizations whose status is checked; they serve the
+// contact rows. The predictor applies M^-1 K^ (dense, formed once) and the
+// sparse LDL^T factor of M_c, P M_c P^T = L D L^T, whose ordering P is
+// applied while the right-hand side is gathered and the solution scattered,
+// so a step allocates nothing and permutes nothing in place.
+// The casing force F is piecewise constant (SPEC §2: on during the first
+// steps, then zero): it is held (set_force) until changed, and a zero force
+// costs nothing per step.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
 
@@ -20,6 +27,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -39,9 +47,13 @@ public:
   ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
                     const ReducedTipContact& contact);
 
-  /// From rest under the casing force f0 at t = 0.
-  void start(const Eigen::VectorXd& casing_force);
-  StepReport step(const Eigen::VectorXd& casing_force);
+  /// From rest under the casing force f0 at t = 0; f0 is held for the steps
+  /// that follow until set_force changes it.
+  void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
+  /// Holds F (n_c entries, [N]) as the casing force of every following step.
+  void set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
+  /// Step n -> n+1 under the held force F_n.
+  StepReport step();
 
   int step_index() const { return m_n; }
   double time() const { return m_n * m_dt; }
@@ -53,20 +65,23 @@ public:
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
-  /// Flops of a contact-free step: the dense M^-1 K^ q (2 r^2), about 12 r
-  /// of vector updates, and the casing's flops (below).
+  /// Flops of a contact-free, force-free step: the dense M^-1 K^ q (2 r^2),
+  /// 4 r of vector updates, about 64 per tip for the gaps, sliding
+  /// velocities and step report, and the casing's flops (below).
   double flops_per_step() const;
-  /// The full casing's part: K_c c (2 nnz(K_c)), its LDLT solve (4 nnz(L_c)
-  /// + n_c) and about 12 n_c of vector updates: the floor under every
-  /// reduced run.
+  /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
+  /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
   double casing_flops_per_step() const;
 
 private:
   double flexibility(const TipContact& i, const TipContact& j) const;
-  /// D_j . (dq, dc): the force direction of tip j applied to a displacement.
-  double direction_dot(const TipContact& j, const Eigen::VectorXd& dq,
-                       const Eigen::VectorXd& dc) const;
+  /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
+  /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
+  double direction_dot(const TipContact& j, const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b,
+                       const Eigen::VectorXd& c_a, const Eigen::VectorXd& c_b) const;
   void solve_contact(const std::vector<TipContact>& tips);
+  /// m_c_next = c~ from m_c, m_c_prev and the held force.
+  void predict_casing();
 
   Eigen::MatrixXd m_kq;
   Eigen::MatrixXd m_mq;
@@ -75,16 +90,30 @@ private:
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_kc;
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_mc;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor;
+  std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
+  Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
   Eigen::MatrixXd m_mc_inverse;
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
 
   int m_n = 0;
-  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev, m_kc_c;
+  Eigen::VectorXd m_force;  ///< held casing force F [N]
+  bool m_force_zero = true; ///< F == 0 exactly: skipped in the step
+  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev;
   Eigen::VectorXd m_q_next, m_c_next, m_dq, m_dc;
+  Eigen::VectorXd
+      m_casing_work; ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
   Eigen::VectorXd m_gap, m_lambda;
-  std::vector<TipContact> m_tips;
+  std::vector<TipContact> m_tips;      ///< tips at the current state
+  std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step
+  // Work storage of solve_contact, kept between steps.
+  std::vector<char> m_active;
+  std::vector<char> m_known;
+  std::vector<int> m_set;
+  Eigen::MatrixXd m_w_all, m_wa;
+  Eigen::VectorXd m_minus_gap, m_la, m_residual;
+  Eigen::PartialPivLU<Eigen::MatrixXd> m_lu;
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;

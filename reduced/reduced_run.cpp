@@ -64,12 +64,16 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
     if (options.full_field) field.push_back(out.basis.transformation * integrator.q());
   };
   const Clock::time_point integration_start = Clock::now();
-  integrator.start(forcing_active(c.forcing, 0.0, s.dt) ? forcing : no_force);
+  bool force_on = forcing_active(c.forcing, 0.0, s.dt);
+  integrator.start(force_on ? forcing : no_force);
   monitor.start(state(), integrator.initial_energy());
   record_field();
   for (int n = 0; n < s.steps_requested; ++n) {
-    const StepReport r =
-        integrator.step(forcing_active(c.forcing, n * s.dt, s.dt) ? forcing : no_force);
+    if (forcing_active(c.forcing, n * s.dt, s.dt) != force_on) { // held until it changes
+      force_on = !force_on;
+      integrator.set_force(force_on ? forcing : no_force);
+    }
+    const StepReport r = integrator.step();
     const int rows = result.history.n_rows();
     const bool go_on = monitor.after_step(r, state(), [&]() { return integrator.energy(); });
     if (result.history.n_rows() > rows) record_field();
