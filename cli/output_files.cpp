@@ -1,5 +1,6 @@
 #include "output_files.hpp"
 
+#include <cassert>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -84,6 +85,38 @@ void write_text_file(const std::string& path, const std::string& content) {
     }
   }
   commit(temporary, path);
+}
+
+StreamedTextFile::StreamedTextFile(const std::string& path)
+    : m_path(path)
+    , m_temporary(temporary_name(path))
+    , m_file(std::fopen(m_temporary.c_str(), "wb")) {
+  if (!m_file) throw OutputError(path + ": cannot write (cannot create " + m_temporary + ")");
+}
+
+StreamedTextFile::~StreamedTextFile() {
+  if (!m_file) return;
+  std::fclose(m_file);
+  std::error_code error;
+  std::filesystem::remove(m_temporary, error);
+}
+
+void StreamedTextFile::append(const std::string& piece) {
+  assert(m_file && "StreamedTextFile::append after commit");
+  if (std::fwrite(piece.data(), 1, piece.size(), m_file) != piece.size())
+    throw OutputError(m_path + ": cannot write (" + m_temporary + ")");
+}
+
+void StreamedTextFile::commit() {
+  assert(m_file && "StreamedTextFile::commit twice");
+  std::FILE* file = m_file;
+  m_file = nullptr;
+  if (std::fclose(file) != 0) {
+    std::error_code error;
+    std::filesystem::remove(m_temporary, error);
+    throw OutputError(m_path + ": cannot write");
+  }
+  rsi::commit(m_temporary, m_path);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 // same directory, then renamed over the target (SPEC §5), so a reader never
 // sees a half-written file.
 
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,29 @@ void make_output_directory(const std::string& dir, const std::string& option);
 void remove_empty_output_directories();
 
 void write_text_file(const std::string& path, const std::string& content);
+
+/// A text file written piece by piece (streamed output of a long run) and
+/// still whole for a reader: the pieces go to a temporary file in the
+/// target's directory, renamed over `path` by commit(); destroyed without a
+/// commit (an exception during the run), the temporary file is removed and
+/// `path` is left as it was. Throws OutputError when a piece cannot be
+/// written (disk full).
+class StreamedTextFile {
+public:
+  explicit StreamedTextFile(const std::string& path);
+  ~StreamedTextFile();
+  StreamedTextFile(const StreamedTextFile&) = delete;
+  StreamedTextFile& operator=(const StreamedTextFile&) = delete;
+
+  void append(const std::string& piece);
+  /// Flushes, closes and renames the temporary file to `path`.
+  void commit();
+
+private:
+  std::string m_path;
+  std::string m_temporary;
+  std::FILE* m_file = nullptr; ///< owned; null once committed
+};
 
 /// Matrix Market coordinate real symmetric (lower triangle), 17 significant digits.
 void write_symmetric_matrix_market(const std::string& path,

@@ -16,24 +16,33 @@ void append(std::string& out, double x) {
 
 } // namespace
 
-std::string history_csv(const History& h) {
-  const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
+std::string history_csv_header(int n_blades) {
   std::string out = "t";
   for (int k = 1; k <= n_blades; ++k)
     out += ",gap_" + std::to_string(k);
   for (int k = 1; k <= n_blades; ++k)
     out += ",lambda_" + std::to_string(k);
   out += ",energy,external_work,contact_work\n";
-  for (int i = 0; i < h.n_rows(); ++i) {
-    append(out, h.time[i]);
-    for (int k = 0; k < n_blades; ++k)
-      out += ',', append(out, h.gap[i](k));
-    for (int k = 0; k < n_blades; ++k)
-      out += ',', append(out, h.lambda[i](k));
-    for (double x : {h.energy[i], h.external_work[i], h.contact_work[i]})
-      out += ',', append(out, x);
-    out += '\n';
-  }
+  return out;
+}
+
+void append_history_csv_row(std::string& out, const HistoryRow& row) {
+  append(out, row.time);
+  for (Eigen::Index k = 0; k < row.gap.size(); ++k)
+    out += ',', append(out, row.gap(k));
+  for (Eigen::Index k = 0; k < row.lambda.size(); ++k)
+    out += ',', append(out, row.lambda(k));
+  for (double x : {row.energy, row.external_work, row.contact_work})
+    out += ',', append(out, x);
+  out += '\n';
+}
+
+std::string history_csv(const History& h) {
+  const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
+  std::string out = history_csv_header(n_blades);
+  for (int i = 0; i < h.n_rows(); ++i)
+    append_history_csv_row(out, HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
+                                           h.external_work[i], h.contact_work[i]});
   return out;
 }
 

@@ -1,7 +1,9 @@
-// rsi simulate: one contact run -> history.csv, summary.json.
+// rsi simulate: one contact run -> history.csv, summary.json (history streamed).
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <unistd.h>
 
 #include "commands.hpp"
@@ -24,23 +26,24 @@ std::function<void(double)> terminal_progress() {
   };
 }
 
-/// One row per history row: t, then every bladed-disk dof (u = T q).
-std::string field_csv(const History& history, const Eigen::MatrixXd& field) {
+/// field.csv: one row per history row, t then every bladed-disk dof (u = T q).
+std::string field_csv_header(Eigen::Index n_dofs) {
   std::string out = "t";
-  for (int i = 0; i < field.cols(); ++i)
+  for (Eigen::Index i = 0; i < n_dofs; ++i)
     out += ",u_" + std::to_string(i);
   out += "\n";
-  char buffer[32];
-  for (int r = 0; r < field.rows(); ++r) {
-    std::snprintf(buffer, sizeof buffer, "%.17g", history.time[r]);
-    out += buffer;
-    for (int i = 0; i < field.cols(); ++i) {
-      std::snprintf(buffer, sizeof buffer, ",%.17g", field(r, i));
-      out += buffer;
-    }
-    out += "\n";
-  }
   return out;
+}
+
+void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", t);
+  out += buffer;
+  for (Eigen::Index i = 0; i < u.size(); ++i) {
+    std::snprintf(buffer, sizeof buffer, ",%.17g", u(i));
+    out += buffer;
+  }
+  out += "\n";
 }
 
 } // namespace
@@ -58,19 +61,44 @@ int run_simulate(const SimulateOptions& options) {
   run.run.force = options.force;
   run.run.progress = terminal_progress();
   run.full_field = options.full_field;
-  ReducedRunResult reduced;
-  const RunResult result = full
-                               ? run_reference(c, run.run)
-                               : (reduced = run_reduced(c, options.method, options.modes, run)).run;
+
+  // Streamed output: the history rows (and field rows) are formatted and
+  // written to temporary files as the run produces them, never kept, so the
+  // memory stays flat however long the run; the files are renamed to
+  // history.csv (field.csv) when the run returns, completed or stopped by a
+  // blow-up. An exception destroys them unrenamed: no half-written output.
+  StreamedTextFile history_file(options.out + "/history.csv");
+  int history_rows = 0;
+  std::string line;
+  run.run.history_sink = [&](const HistoryRow& row) {
+    line.clear();
+    if (history_rows++ == 0) line = history_csv_header(static_cast<int>(row.gap.size()));
+    append_history_csv_row(line, row);
+    history_file.append(line);
+  };
+  std::optional<StreamedTextFile> field_file;
+  int field_rows = 0;
+  if (options.full_field) {
+    field_file.emplace(options.out + "/field.csv");
+    run.field_sink = [&](double t, const Eigen::VectorXd& u) {
+      line.clear();
+      if (field_rows++ == 0) line = field_csv_header(u.size());
+      append_field_csv_row(line, t, u);
+      field_file->append(line);
+    };
+  }
+
+  const RunResult result =
+      full ? run_reference(c, run.run) : run_reduced(c, options.method, options.modes, run).run;
   if (run.run.progress) std::fprintf(stderr, "\n");
-  write_text_file(options.out + "/history.csv", history_csv(result.history));
+  if (history_rows == 0) history_file.append(history_csv_header(0)); // as history_csv(History{})
+  history_file.commit();
   write_text_file(options.out + "/summary.json", summary_json(result.summary));
   if (result.casing_u_at_first_contact.size() > 0)
     write_text_file(
         options.out + "/casing_first_contact.csv",
         casing_snapshot_csv(result.casing_u_at_first_contact, result.casing_v_at_first_contact));
-  if (options.full_field)
-    write_text_file(options.out + "/field.csv", field_csv(result.history, reduced.field));
+  if (field_file) field_file->commit();
   const RunSummary& s = result.summary;
   std::printf("%s: method %s%s, %d dofs, %d of %d steps in %.3f s (integration %.3f s)\n",
               c.source.c_str(), s.method.c_str(),

@@ -60,8 +60,14 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
                      integrator.lambda(),     integrator.external_work(), integrator.contact_work(),
                      integrator.casing()};
   };
+  Eigen::VectorXd u(bd.n_dofs());
   auto record_field = [&]() {
-    if (options.full_field) field.push_back(out.basis.transformation * integrator.q());
+    if (!options.full_field) return;
+    u.noalias() = out.basis.transformation * integrator.q();
+    if (options.field_sink)
+      options.field_sink(integrator.time(), u);
+    else
+      field.push_back(u);
   };
   const Clock::time_point integration_start = Clock::now();
   bool force_on = forcing_active(c.forcing, 0.0, s.dt);
@@ -74,13 +80,13 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
       integrator.set_force(force_on ? forcing : no_force);
     }
     const StepReport r = integrator.step();
-    const int rows = result.history.n_rows();
+    const int rows = monitor.n_rows();
     const bool go_on = monitor.after_step(r, state(), [&]() { return integrator.energy(); });
-    if (result.history.n_rows() > rows) record_field();
+    if (monitor.n_rows() > rows) record_field();
     if (!go_on) break;
   }
   monitor.finish(seconds_since(integration_start), seconds_since(start));
-  if (options.full_field) {
+  if (options.full_field && !options.field_sink) {
     out.field.resize(static_cast<Eigen::Index>(field.size()), bd.n_dofs());
     for (size_t i = 0; i < field.size(); ++i)
       out.field.row(static_cast<Eigen::Index>(i)) = field[i].transpose();

@@ -2,6 +2,7 @@
 // A contact run of the reduced bladed disk (CB, CCM or Guyan) with the full
 // casing (SPEC §3): same outputs as the reference run.
 
+#include <functional>
 #include <string>
 
 #include <Eigen/Core>
@@ -12,17 +13,25 @@
 
 namespace rsi {
 
+/// Receives the bladed-disk field u = T q at time t [s] of a history row;
+/// `u` is valid only during the call (not owned).
+using FieldSink = std::function<void(double t, const Eigen::VectorXd& u)>;
+
 struct ReducedRunOptions {
-  RunOptions run;
+  RunOptions run; ///< its history_sink, if set, streams the history rows
   /// Recover the physical displacement u = T q of every bladed-disk dof on
   /// each output step (for stresses and animations).
   bool full_field = false;
+  /// With full_field: when set, each field row is handed to it as it is
+  /// produced and ReducedRunResult::field stays empty (streamed output).
+  FieldSink field_sink;
 };
 
 struct ReducedRunResult {
   RunResult run;
   ReducedBasis basis;
-  /// Row i: the bladed-disk dofs at history row i (empty unless asked).
+  /// Row i: the bladed-disk dofs at history row i (empty unless asked, or
+  /// when streamed through ReducedRunOptions::field_sink).
   Eigen::MatrixXd field;
 };
 

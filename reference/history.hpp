@@ -1,8 +1,12 @@
 #pragma once
 // What a contact run produces (SPEC §5): the sampled history of the blade
 // tip gaps and multipliers with the energy terms, and the run's summary.
-// Both solvers (reference/ and reduced/) fill these same records.
+// Both solvers (reference/ and reduced/) fill these same records, either
+// kept whole in memory (History) or handed out row by row as they are
+// produced (HistorySink), so that a long run's memory does not grow with
+// its length.
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,6 +25,21 @@ struct StepReport {
   int sliding_reversals = 0;          ///< active constraints whose sliding changed sign
 };
 
+/// One history row as the run produces it. The vectors are views of the
+/// solver's state (not owned): valid only during the call that receives the
+/// row; copy what must outlive it.
+struct HistoryRow {
+  double time = 0.0;             ///< t_n [s]
+  const Eigen::VectorXd& gap;    ///< g_k at u_n, blades 1..N [m]
+  const Eigen::VectorXd& lambda; ///< lambda_k of the step that produced u_n [N]
+  double energy = 0.0;           ///< discrete energy E_{n-1/2} [J]
+  double external_work = 0.0;    ///< W_ext up to step n-1 [J]
+  double contact_work = 0.0;     ///< W_contact up to step n-1 [J]
+};
+
+/// Receives each history row as it is produced, in order (streamed output).
+using HistorySink = std::function<void(const HistoryRow&)>;
+
 /// One row every output_every steps, the first at t = 0.
 struct History {
   std::vector<double> time;            ///< t_n [s]
@@ -31,6 +50,16 @@ struct History {
   std::vector<double> contact_work;    ///< W_contact up to step n-1 [J]
 
   int n_rows() const { return static_cast<int>(time.size()); }
+
+  /// Keeps a copy of `row`.
+  void append(const HistoryRow& row) {
+    time.push_back(row.time);
+    gap.push_back(row.gap);
+    lambda.push_back(row.lambda);
+    energy.push_back(row.energy);
+    external_work.push_back(row.external_work);
+    contact_work.push_back(row.contact_work);
+  }
 };
 
 struct RunSummary {
@@ -63,8 +92,10 @@ struct RunSummary {
   double final_contact_work = 0.0;
   int max_active = 0;          ///< most contacts active at once
   int first_contact_step = -1; ///< first step with any lambda > 0 (-1: none)
-  std::vector<std::pair<double, double>>
-      contact_intervals_blade_1; ///< [first, last] step times with lambda_1 > 0
+  /// [first, last] step times with lambda_1 > 0: one entry per contact
+  /// interval of blade 1 (not per step), so it grows with the number of
+  /// separate contacts, never with the run's length alone.
+  std::vector<std::pair<double, double>> contact_intervals_blade_1;
 };
 
 } // namespace rsi

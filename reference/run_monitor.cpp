@@ -35,13 +35,15 @@ RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& op
 }
 
 void RunMonitor::add_row(const StepState& state, double energy) {
-  History& h = m_result.history;
-  h.time.push_back(state.time);
-  h.gap.push_back(state.gap);
-  h.lambda.push_back(state.lambda);
-  h.energy.push_back(energy);
-  h.external_work.push_back(state.external_work);
-  h.contact_work.push_back(state.contact_work);
+  const HistoryRow row{state.time, state.gap,           state.lambda,
+                       energy,     state.external_work, state.contact_work};
+  if (m_options.history_sink)
+    m_options.history_sink(row);
+  else
+    m_result.history.append(row);
+  ++m_n_rows;
+  m_last_external_work = state.external_work;
+  m_last_contact_work = state.contact_work;
 }
 
 bool RunMonitor::stop(const std::string& status) {
@@ -124,9 +126,9 @@ void RunMonitor::finish(double integration_seconds, double wall_seconds) {
   RunSummary& s = m_result.summary;
   s.integration_seconds = integration_seconds;
   s.wall_seconds = wall_seconds;
-  if (!m_result.history.external_work.empty()) {
-    s.final_external_work = m_result.history.external_work.back();
-    s.final_contact_work = m_result.history.contact_work.back();
+  if (m_n_rows > 0) {
+    s.final_external_work = m_last_external_work;
+    s.final_contact_work = m_last_contact_work;
   }
 }
 

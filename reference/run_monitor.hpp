@@ -37,10 +37,15 @@ struct RunOptions {
   double blowup_factor = 100.0;
   /// Called now and then with the fraction done (for progress display).
   std::function<void(double)> progress;
+  /// When set, every history row is handed to it as it is produced and
+  /// RunResult::history stays empty (streamed output: the run's memory does
+  /// not grow with its length); when empty, the rows are kept in
+  /// RunResult::history.
+  HistorySink history_sink;
 };
 
 struct RunResult {
-  History history;
+  History history; ///< every row, unless RunOptions::history_sink took them
   RunSummary summary;
   /// Casing radial and tangential displacement of every casing node (zeros
   /// at the clamp) at the first contact (empty without contact), for the
@@ -77,6 +82,8 @@ public:
                   const std::function<double()>& energy);
   /// Closes the summary.
   void finish(double integration_seconds, double wall_seconds);
+  /// History rows produced so far (kept or streamed).
+  int n_rows() const { return m_n_rows; }
 
 private:
   void add_row(const StepState& state, double energy);
@@ -89,6 +96,9 @@ private:
   double m_runaway_gap;
   double m_largest_external_work = 0.0;
   bool m_in_contact = false;
+  int m_n_rows = 0;
+  double m_last_external_work = 0.0; ///< of the last row
+  double m_last_contact_work = 0.0;  ///< of the last row
 };
 
 } // namespace rsi
