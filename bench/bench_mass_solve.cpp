@@ -62,6 +62,62 @@ void cholmod_supernodal(benchmark::State& state) {
   }
 }
 
+/// The integrator's way (reference/central_difference): the system kept in
+/// the AMD-permuted coordinates, L (stored by rows), D and L^T applied in place.
+void eigen_ldlt_in_place(benchmark::State& state) {
+  const SpMat& m = default_system().m;
+  const Eigen::SimplicialLDLT<SpMat> solver(m);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> l_rows = solver.matrixL();
+  const Eigen::VectorXd inverse_d = solver.vectorD().cwiseInverse();
+  const Eigen::VectorXd r = Eigen::VectorXd::Random(m.rows());
+  Eigen::VectorXd x(m.rows());
+  for (auto _ : state) {
+    x = r;
+    l_rows.triangularView<Eigen::UnitLower>().solveInPlace(x);
+    x.array() *= inverse_d.array();
+    solver.matrixU().solveInPlace(x);
+    benchmark::DoNotOptimize(x.data());
+  }
+}
+
+/// CHOLMOD's simplicial LDL^T of the AMD-permuted M (natural ordering, no
+/// postordering), solved by cholmod_solve2 with its workspace reused.
+class ExposedCholmodLdlt : public Eigen::CholmodSimplicialLDLT<SpMat> {
+public:
+  cholmod_factor* factor() { return m_cholmodFactor; }
+};
+
+void cholmod_ldlt_solve2(benchmark::State& state) {
+  const SpMat& m = default_system().m;
+  const Eigen::SimplicialLDLT<SpMat> amd(m);
+  const SpMat permuted = amd.permutationP() * m * amd.permutationP().inverse();
+  ExposedCholmodLdlt solver;
+  cholmod_common& common = solver.cholmod();
+  common.nmethods = 1;
+  common.method[0].ordering = CHOLMOD_NATURAL;
+  common.postorder = 0;
+  solver.compute(permuted);
+  if (solver.info() != Eigen::Success) state.SkipWithError("factorization failed");
+  const auto n = static_cast<size_t>(m.rows());
+  cholmod_dense* b = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
+  const Eigen::VectorXd r = Eigen::VectorXd::Random(m.rows());
+  Eigen::Map<Eigen::VectorXd>(static_cast<double*>(b->x), m.rows()) = r;
+  cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
+  for (auto _ : state) {
+    cholmod_solve2(CHOLMOD_LDLt, solver.factor(), b, nullptr, &x, nullptr, &y, &e, &common);
+    benchmark::DoNotOptimize(x->x);
+  }
+  // Same answer as Eigen's factor of the same permuted matrix.
+  const Eigen::VectorXd reference =
+      amd.permutationP() * Eigen::VectorXd(amd.solve(amd.permutationP().inverse() * r));
+  const Eigen::VectorXd got = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), m.rows());
+  state.counters["relative_difference"] = (got - reference).norm() / reference.norm();
+  cholmod_free_dense(&x, &common);
+  cholmod_free_dense(&y, &common);
+  cholmod_free_dense(&e, &common);
+  cholmod_free_dense(&b, &common);
+}
+
 template <int Options> void product(benchmark::State& state) {
   const Eigen::SparseMatrix<double, Options> k = default_system().k;
   const Eigen::VectorXd u = Eigen::VectorXd::Random(k.rows());
@@ -81,6 +137,8 @@ BENCHMARK(solve<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::COLAMDOrdering
     ->Name("mass_solve/eigen_simplicial_ldlt_colamd");
 BENCHMARK(solve<Eigen::CholmodSimplicialLLT<SpMat>>)->Name("mass_solve/cholmod_simplicial_llt");
 BENCHMARK(cholmod_supernodal)->Name("mass_solve/cholmod_supernodal_llt");
+BENCHMARK(eigen_ldlt_in_place)->Name("mass_solve/eigen_ldlt_permuted_in_place");
+BENCHMARK(cholmod_ldlt_solve2)->Name("mass_solve/cholmod_ldlt_permuted_solve2");
 BENCHMARK(product<Eigen::ColMajor>)->Name("stiffness_product/col_major");
 BENCHMARK(product<Eigen::RowMajor>)->Name("stiffness_product/row_major");
 

@@ -262,6 +262,9 @@ int main(int argc, char** argv) {
     } catch (const rsi::IntegrationError& e) {
       std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
       return 3;
+    } catch (const rsi::MassFactorError& e) {
+      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
+      return 3;
     } catch (const rsi::ModalError& e) {
       std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
       return 3;

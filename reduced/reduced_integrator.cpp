@@ -28,11 +28,9 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     m_mc_order[i] =
         m_mc_factor.permutationP().size() > 0 ? m_mc_factor.permutationP().indices()(i) : i;
   m_mc_inverse_d = m_mc_factor.vectorD().cwiseInverse();
-  if (!m_kc.isCompressed() || !m_mc_factor.matrixL().nestedExpression().isCompressed())
-    throw std::logic_error("reduced integrator: K_c and L_c are expected in compressed storage");
   m_force = Eigen::VectorXd::Zero(nc);
   m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
-  m_c_next = m_dc = m_casing_work = Eigen::VectorXd::Zero(nc);
+  m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
 }
 
 double ReducedIntegrator::casing_flops_per_step() const {
@@ -165,42 +163,19 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
 }
 
 void ReducedIntegrator::predict_casing() {
-  // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y, and
-  // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)). K_c c_n is formed row by
-  // row inside the gather; L is unit lower, stored by columns without its
-  // diagonal.
+  // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y by
+  // Eigen's triangular solves on the factor (no permutation in place), and
+  // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)).
   const int n = static_cast<int>(m_c.size());
   const double dt2 = m_dt * m_dt;
-  double* y = m_casing_work.data();
-  const int* k_outer = m_kc.outerIndexPtr();
-  const int* k_inner = m_kc.innerIndexPtr();
-  const double* k_value = m_kc.valuePtr();
-  for (int i = 0; i < n; ++i) {
-    double kc = 0.0;
-    for (int p = k_outer[i]; p < k_outer[i + 1]; ++p)
-      kc += k_value[p] * m_c(k_inner[p]);
-    y[m_mc_order[i]] = m_force_zero ? -kc : m_force(i) - kc;
-  }
-  const Eigen::SparseMatrix<double>& l = m_mc_factor.matrixL().nestedExpression();
-  const int* l_outer = l.outerIndexPtr();
-  const int* l_inner = l.innerIndexPtr();
-  const double* l_value = l.valuePtr();
-  for (int j = 0; j < n; ++j) { // L y' = y, by columns
-    const double yj = y[j];
-    if (yj == 0.0) continue;
-    for (int p = l_outer[j]; p < l_outer[j + 1]; ++p)
-      y[l_inner[p]] -= yj * l_value[p];
-  }
+  m_kc_c.noalias() = m_kc * m_c;
+  for (int i = 0; i < n; ++i)
+    m_casing_work(m_mc_order[i]) = m_force_zero ? -m_kc_c(i) : m_force(i) - m_kc_c(i);
+  m_mc_factor.matrixL().solveInPlace(m_casing_work);
+  m_casing_work.array() *= m_mc_inverse_d.array();
+  m_mc_factor.matrixU().solveInPlace(m_casing_work);
   for (int j = 0; j < n; ++j)
-    y[j] *= m_mc_inverse_d(j);
-  for (int j = n - 1; j >= 0; --j) { // L^T y' = y: row j of L^T is column j of L
-    double yj = y[j];
-    for (int p = l_outer[j]; p < l_outer[j + 1]; ++p)
-      yj -= l_value[p] * y[l_inner[p]];
-    y[j] = yj;
-  }
-  for (int j = 0; j < n; ++j)
-    m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * y[m_mc_order[j]];
+    m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * m_casing_work(m_mc_order[j]);
 }
 
 StepReport ReducedIntegrator::step() {

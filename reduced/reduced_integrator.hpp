@@ -103,7 +103,8 @@ private:
   Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev;
   Eigen::VectorXd m_q_next, m_c_next, m_dq, m_dc;
   Eigen::VectorXd
-      m_casing_work; ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
+      m_casing_work;      ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
+  Eigen::VectorXd m_kc_c; ///< K_c c_n (work)
   Eigen::VectorXd m_gap, m_lambda;
   std::vector<TipContact> m_tips;      ///< tips at the current state
   std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step

@@ -8,41 +8,32 @@
 
 namespace rsi {
 
+namespace {
+
+/// M, once K, M and dt are checked to be usable together.
+const Eigen::SparseMatrix<double>& checked_mass(const Eigen::SparseMatrix<double>& stiffness,
+                                                const Eigen::SparseMatrix<double>& mass,
+                                                double dt) {
+  if (!(dt > 0.0)) throw std::invalid_argument("CentralDifference: dt must be > 0");
+  if (stiffness.rows() != mass.rows() || stiffness.cols() != mass.cols() ||
+      mass.rows() != mass.cols())
+    throw std::invalid_argument("CentralDifference: K and M must be square and of the same size");
+  return mass;
+}
+
+} // namespace
+
 CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
                                      const Eigen::SparseMatrix<double>& mass, double dt,
                                      const ContactLaw& law)
     : m_dt(dt)
     , m_law(law)
+    , m_mass_factor(checked_mass(stiffness, mass, dt))
+    , m_position(m_mass_factor.position())
+    , m_k(m_mass_factor.permuted(stiffness))
+    , m_m(m_mass_factor.permuted(mass))
     , m_inverse_columns(mass.rows())
-    , m_sparse_inverse_columns(mass.rows()) {
-  if (!(dt > 0.0)) throw std::invalid_argument("CentralDifference: dt must be > 0");
-  if (stiffness.rows() != mass.rows() || stiffness.cols() != mass.cols() ||
-      mass.rows() != mass.cols())
-    throw std::invalid_argument("CentralDifference: K and M must be square and of the same size");
-  m_mass_factor.compute(mass);
-  if (m_mass_factor.info() != Eigen::Success || !(m_mass_factor.vectorD().minCoeff() > 0.0))
-    throw IntegrationError(
-        "central differences: the mass matrix is not positive definite (Cholesky failed)");
-  const Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>& p =
-      m_mass_factor.permutationP();
-  m_position =
-      p.size() > 0 ? p.indices() : Eigen::VectorXi::LinSpaced(mass.rows(), 0, mass.rows() - 1);
-  m_inverse_diagonal = m_mass_factor.vectorD().cwiseInverse();
-  m_l_rows = m_mass_factor.matrixL();
-  if (p.size() > 0) {
-    m_k = Eigen::SparseMatrix<double>(p * stiffness * p.inverse());
-    m_m = Eigen::SparseMatrix<double>(p * mass * p.inverse());
-  } else {
-    m_k = stiffness;
-    m_m = mass;
-  }
-}
-
-void CentralDifference::apply_inverse_mass(Eigen::VectorXd& r) const {
-  m_l_rows.triangularView<Eigen::UnitLower>().solveInPlace(r);
-  r.array() *= m_inverse_diagonal.array();
-  m_mass_factor.matrixU().solveInPlace(r);
-}
+    , m_sparse_inverse_columns(mass.rows()) {}
 
 void CentralDifference::to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
                                     Eigen::VectorXd& velocity) const {
@@ -85,7 +76,7 @@ double CentralDifference::permuted_dot(const SparseRow& row, const Eigen::Vector
 }
 
 double CentralDifference::flops_per_step() const {
-  const auto nnz_l = static_cast<double>(m_mass_factor.matrixL().nestedExpression().nonZeros());
+  const double nnz_l = m_mass_factor.nonzeros_l();
   return 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l +
          13.0 * static_cast<double>(m_k.rows());
 }

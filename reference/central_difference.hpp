@@ -17,26 +17,25 @@
 // right-hand side step by step and E is computed from its definition, so
 // E - E_0 - W_ext - W_contact is round-off unless the scheme is broken.
 //
-// M^-1 is applied through a sparse Cholesky factorization P M P^T = L D L^T
-// (Eigen SimplicialLDLT, AMD ordering: the fastest solve of those measured
-// by bench/bench_mass_solve at this size); its status is checked after
-// factorizing. The state is kept in the permuted coordinates u' = P u, with
-// K' = P K P^T and M' = P M P^T, so a step applies L^-1, D^-1 and L^-T with
-// no permutation (permuting a vector in place took 15 % of a step); the
-// contact law and the accessors see physical vectors, gathered once per
-// evaluation. The columns M^-1 e_i met by contact rows are computed once and
-// cached, dense for the entries of W and sparse for the correction. The energy costs a product with
-// M, so it is computed when asked (the works are summed at every step).
+// M^-1 is applied through CHOLMOD's LDL^T of P M P^T (reference/mass_factor,
+// AMD order), whose status and pivots are checked. The state is kept in the
+// permuted coordinates u' = P u, with K' = P K P^T and M' = P M P^T, so a
+// step applies the factor with no permutation (permuting a vector in place
+// took 15 % of a step); the contact law and the accessors see physical
+// vectors, gathered once per evaluation. The columns M^-1 e_i met by
+// contact rows are computed once and cached, dense for the entries of W and
+// sparse for the correction. The energy costs a product with M, so it is
+// computed when asked (the works are summed at every step).
 
 #include <stdexcept>
 #include <vector>
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include "contact_law.hpp"
 #include "history.hpp"
+#include "mass_factor.hpp"
 
 namespace rsi {
 
@@ -83,8 +82,8 @@ private:
   double contact_flexibility(const SparseRow& gradient, const SparseRow& direction);
   /// G u for a row G in physical dofs and u in permuted coordinates.
   double permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const;
-  /// r <- M'^-1 r through the factors of P M P^T.
-  void apply_inverse_mass(Eigen::VectorXd& r) const;
+  /// r <- M'^-1 r through the factor of P M P^T.
+  void apply_inverse_mass(Eigen::VectorXd& r) { m_mass_factor.solve_in_place(r); }
   /// physical <- P^T permuted, velocity <- (physical - u_n) / dt.
   void to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
                    Eigen::VectorXd& velocity) const;
@@ -93,14 +92,10 @@ private:
   using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>; // faster products
   double m_dt;
   const ContactLaw& m_law;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mass_factor;
-  Eigen::VectorXi m_position;         ///< u'(m_position(i)) = u(i)
-  Eigen::VectorXd m_inverse_diagonal; ///< D^-1
-  /// L stored by rows: its forward solve is then a dot product per row, not
-  /// an update per column with a test for zero (L has ~4 entries a column).
-  Eigen::SparseMatrix<double, Eigen::RowMajor> m_l_rows;
-  RowMajorMatrix m_k; ///< K'
-  RowMajorMatrix m_m; ///< M'
+  MassFactor m_mass_factor;
+  const Eigen::VectorXi& m_position; ///< u'(m_position(i)) = u(i)
+  RowMajorMatrix m_k;                ///< K'
+  RowMajorMatrix m_m;                ///< M'
   std::vector<Eigen::VectorXd> m_inverse_columns;
   /// The same columns without their zeros: M is block diagonal (bladed
   /// disk, casing), so a casing column has 156 nonzeros of 838.
