@@ -171,6 +171,7 @@ int run_campaign(const CampaignOptions& options) {
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const CampaignResult& r) { return r.error.empty(); });
   if (options.report) {
+    std::fflush(stdout); // the table before the script's own lines
     const int status = make_report(options.out);
     if (status != 0) {
       std::fprintf(

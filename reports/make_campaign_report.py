@@ -249,7 +249,7 @@ if red44:
              "here; the paper's model and solver were larger and slower per dof, which is where a reduced "
              "model pays. The contact work (the same 22 tips in both) and the per-step bookkeeping are a "
              "second floor. `bench/RESULTS.md` shows the reduced cost flat and the full cost growing with "
-             "the model size, and the size at which CB-44 is 10x faster.")
+             "the model size, and the size at which CB-44 and CCM-44 are 10x faster.")
 
 L += ["", "## Mode-count guidance", ""]
 for target in (0.1, 0.05, 0.01):
