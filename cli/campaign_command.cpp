@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "bladed_disk.hpp"
+#include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
 #include "output_files.hpp"
@@ -115,7 +116,7 @@ int run_campaign(const CampaignOptions& options) {
   for (std::thread& t : threads)
     t.join();
   if (!runs[0].error.empty())
-    throw std::runtime_error("campaign: the reference run failed: " + runs[0].error);
+    throw IntegrationError("campaign: the reference run failed: " + runs[0].error);
 
   const RunResult& reference = runs[0].result;
   std::vector<GapErrors> errors(runs.size());

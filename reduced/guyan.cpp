@@ -19,10 +19,11 @@ public:
 
   /// Empty if the factor is that of a positive definite matrix, else why not.
   std::string defect() {
+    if (m_cholmodFactor == nullptr) return "CHOLMOD: the analysis failed (no factor)";
     const cholmod_factor& f = *m_cholmodFactor;
     const int n = static_cast<int>(f.n);
     const int* perm = static_cast<const int*>(f.Perm);
-    auto column = [&](int j) { return std::to_string(perm ? perm[j] : j); };
+    auto column = [&](int j) { return j < n ? std::to_string(perm ? perm[j] : j) : "(none)"; };
     std::ostringstream why;
     if (info() != Eigen::Success) {
       why << "CHOLMOD: not positive definite at column " << column(static_cast<int>(f.minor))

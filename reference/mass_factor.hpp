@@ -4,9 +4,8 @@
 // fill-reducing order P (AMD), applied by cholmod_solve2 in the permuted
 // coordinates u' = P u with its workspace reused. The integrator keeps its
 // state in those coordinates, so no permutation is applied per step.
-// bench/bench_mass_solve measured this solve at 7.4 us against 10.3 us for
-// Eigen's SimplicialLDLT factors applied in place, and 13-20 us for the
-// solves that permute (default system, 838 dofs).
+// bench/bench_mass_solve found this solve the fastest of those it compares
+// on the default system (bench/RESULTS.md).
 
 #include <stdexcept>
 

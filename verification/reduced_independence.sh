@@ -3,7 +3,7 @@
 # contact code. Fails if any file of reduced/ includes their headers.
 # Usage: reduced_independence.sh SOURCE_DIR
 set -u
-forbidden='#include "(central_difference|tip_casing_contact|contact_law|reference_run)\.hpp"'
+forbidden='#include "(central_difference|mass_factor|tip_casing_contact|contact_law|reference_run)\.hpp"'
 if hits=$(grep -rnE "$forbidden" "$1/reduced"); then
   echo "reduced/ includes reference integrator or contact code:"
   echo "$hits"
