@@ -64,7 +64,7 @@ int make_report(const std::string& dir) {
 
 } // namespace
 
-int run_campaign(const CampaignOptions& options) {
+int run_campaign(const CampaignOptions& options, OutputDirectories& directories) {
   const Case c = load_case(options.case_path);
   if (c.campaign.empty())
     throw UsageError(c.source + ": key 'campaign': missing or empty, nothing to run");
@@ -84,7 +84,7 @@ int run_campaign(const CampaignOptions& options) {
                                               : "[0, " + std::to_string(most) + "] for " +
                                                     r.method + " (dofs minus boundary dofs)"));
   }
-  make_output_directory(options.out, "--out");
+  directories.make(options.out, "--out");
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.
   std::vector<CampaignResult> runs(c.campaign.size() + 1);
@@ -132,7 +132,7 @@ int run_campaign(const CampaignOptions& options) {
       continue;
     }
     errors[i] = blade1_gap_errors(r.result.history, reference.history);
-    make_output_directory(dir, "--out");
+    directories.make(dir, "--out");
     write_text_file(dir + "/history.csv", history_csv(r.result.history));
     write_text_file(dir + "/summary.json", summary_json(r.result.summary));
     csv << r.run.method << "," << r.run.modes << "," << errors[i].e2 << "," << errors[i].e_inf

@@ -12,6 +12,8 @@
 
 namespace rsi {
 
+class OutputDirectories;
+
 /// A command-line value outside its allowed range.
 class UsageError : public std::invalid_argument {
 public:
@@ -70,11 +72,11 @@ struct ModesTable {
 };
 ModesTable modes_table(const Case& c, const std::string& part, int count);
 
-int run_modes(const ModesOptions& options);
-int run_export(const ExportOptions& options);
+int run_modes(const ModesOptions& options, OutputDirectories& directories);
+int run_export(const ExportOptions& options, OutputDirectories& directories);
 int run_calibrate(const CalibrateOptions& options);
-int run_simulate(const SimulateOptions& options);
-int run_reduce(const ReduceOptions& options);
-int run_campaign(const CampaignOptions& options);
+int run_simulate(const SimulateOptions& options, OutputDirectories& directories);
+int run_reduce(const ReduceOptions& options, OutputDirectories& directories);
+int run_campaign(const CampaignOptions& options, OutputDirectories& directories);
 
 } // namespace rsi

@@ -30,14 +30,14 @@ void write_part(const std::string& dir, const Eigen::SparseMatrix<double>& stiff
 
 } // namespace
 
-int run_export(const ExportOptions& options) {
+int run_export(const ExportOptions& options, OutputDirectories& directories) {
   const Case c = load_case(options.case_path);
   const BladedDisk bd = assemble_bladed_disk(c);
   const Casing casing = assemble_casing(c);
   // Both directories before any file: an unwritable one leaves no part written.
-  make_output_directory(options.out, "--out");
-  make_output_directory(options.out + "/bladed-disk", "--out");
-  make_output_directory(options.out + "/casing", "--out");
+  directories.make(options.out, "--out");
+  directories.make(options.out + "/bladed-disk", "--out");
+  directories.make(options.out + "/casing", "--out");
   write_part(options.out + "/bladed-disk", bd.stiffness, bd.mass, bd.dofs);
   write_part(options.out + "/casing", casing.stiffness, casing.mass, casing.dofs);
   return 0;

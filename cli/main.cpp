@@ -233,14 +233,15 @@ int main(int argc, char** argv) {
     return 2;
   }
   // Status of the subcommand: the exception kinds map to exit 2 (bad input) or 3 (numerical).
+  rsi::OutputDirectories directories;
   auto run = [&]() -> int {
     try {
-      if (*modes_cmd) return rsi::run_modes(modes);
-      if (*export_cmd) return rsi::run_export(export_options);
+      if (*modes_cmd) return rsi::run_modes(modes, directories);
+      if (*export_cmd) return rsi::run_export(export_options, directories);
       if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
-      if (*simulate_cmd) return rsi::run_simulate(simulate);
-      if (*reduce_cmd) return rsi::run_reduce(reduce);
-      if (*campaign_cmd) return rsi::run_campaign(campaign);
+      if (*simulate_cmd) return rsi::run_simulate(simulate, directories);
+      if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
+      if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
     } catch (const rsi::CaseError& e) {
       std::fprintf(stderr, "rsi: error: %s\n", e.what());
       return 2;
@@ -276,6 +277,6 @@ int main(int argc, char** argv) {
   };
   const int status = run();
   // A failed command leaves no output directory it created and left empty.
-  if (status != 0) rsi::remove_empty_output_directories();
+  if (status != 0) directories.remove_empty();
   return status;
 }

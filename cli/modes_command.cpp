@@ -58,13 +58,13 @@ ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
   return table;
 }
 
-int run_modes(const ModesOptions& options) {
+int run_modes(const ModesOptions& options, OutputDirectories& directories) {
   const Case c = load_case(options.case_path);
   const ModesTable table = modes_table(c, options.part, options.count);
   const Modes& modes = table.modes;
   const std::vector<int>& diameters = table.diameters;
   const int n = table.n_dofs;
-  make_output_directory(options.out, "--out");
+  directories.make(options.out, "--out");
   const std::string path = options.out + "/modes.csv";
   write_text_file(path, table.csv);
 

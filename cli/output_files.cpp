@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <unistd.h>
 #include <vector>
 
@@ -28,14 +27,7 @@ void commit(const std::string& temporary, const std::string& path) {
 
 } // namespace
 
-namespace {
-
-std::mutex created_mutex;
-std::vector<std::filesystem::path> created; ///< by make_output_directory, parents first
-
-} // namespace
-
-void make_output_directory(const std::string& dir, const std::string& option) {
+void OutputDirectories::make(const std::string& dir, const std::string& option) {
   const std::string allowed = "; --out must name a directory that can be created and written";
   if (dir.empty()) throw OutputError(option + ": empty path" + allowed);
   // The directories about to be created, parents first.
@@ -47,11 +39,8 @@ void make_output_directory(const std::string& dir, const std::string& option) {
     if (p == p.parent_path()) break;
   }
   std::filesystem::create_directories(dir, error);
-  {
-    const std::lock_guard<std::mutex> lock(created_mutex);
-    for (const std::filesystem::path& p : missing)
-      if (std::filesystem::is_directory(p)) created.push_back(p);
-  }
+  for (const std::filesystem::path& p : missing)
+    if (std::filesystem::is_directory(p)) m_created.push_back(p);
   if (error || !std::filesystem::is_directory(dir))
     throw OutputError(option + " " + dir + ": cannot create the output directory (" +
                       (error ? error.message() : "not a directory") + ")" + allowed);
@@ -64,13 +53,12 @@ void make_output_directory(const std::string& dir, const std::string& option) {
                       allowed);
 }
 
-void remove_empty_output_directories() {
-  const std::lock_guard<std::mutex> lock(created_mutex);
-  for (auto p = created.rbegin(); p != created.rend(); ++p) {
+void OutputDirectories::remove_empty() {
+  for (auto p = m_created.rbegin(); p != m_created.rend(); ++p) {
     std::error_code error;
     if (std::filesystem::is_empty(*p, error)) std::filesystem::remove(*p, error);
   }
-  created.clear();
+  m_created.clear();
 }
 
 void write_text_file(const std::string& path, const std::string& content) {

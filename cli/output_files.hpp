@@ -4,8 +4,10 @@
 // sees a half-written file.
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/SparseCore>
 
@@ -17,15 +19,21 @@ public:
   using std::runtime_error::runtime_error;
 };
 
-/// Creates `dir` (and parents) and checks that a file can be created in it
-/// (a probe file, removed at once); throws OutputError naming `option` and
-/// the directory. The directories it creates are remembered for
-/// remove_empty_output_directories.
-void make_output_directory(const std::string& dir, const std::string& option);
+/// The output directories a command creates, remembered so that a failed
+/// command can remove those it left empty (no output on failure, SPEC §5).
+class OutputDirectories {
+public:
+  /// Creates `dir` (and parents) and checks that a file can be created in it
+  /// (a probe file, removed at once); throws OutputError naming `option` and
+  /// the directory.
+  void make(const std::string& dir, const std::string& option);
+  /// Removes the directories `make` created that are still empty, deepest
+  /// first (a directory holding a file stays).
+  void remove_empty();
 
-/// After a failure: removes the directories make_output_directory created
-/// that are still empty, deepest first (a directory holding a file stays).
-void remove_empty_output_directories();
+private:
+  std::vector<std::filesystem::path> m_created; ///< parents first
+};
 
 void write_text_file(const std::string& path, const std::string& content);
 

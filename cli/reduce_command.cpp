@@ -12,14 +12,14 @@
 
 namespace rsi {
 
-int run_reduce(const ReduceOptions& options) {
+int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
   if (options.method != "cb" && options.method != "ccm" && options.method != "guyan")
     throw UsageError("--method: must be cb, ccm or guyan, got '" + options.method + "'");
   const Case c = load_case(options.case_path);
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, options.method, options.modes);
   const double omega_max = reduced_omega_max(basis);
-  make_output_directory(options.out, "--out");
+  directories.make(options.out, "--out");
   write_symmetric_matrix_market(options.out + "/K.mtx", basis.stiffness.sparseView());
   write_symmetric_matrix_market(options.out + "/M.mtx", basis.mass.sparseView());
   write_general_matrix_market(options.out + "/T.mtx", basis.transformation.sparseView());

@@ -48,7 +48,7 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 
 } // namespace
 
-int run_simulate(const SimulateOptions& options) {
+int run_simulate(const SimulateOptions& options, OutputDirectories& directories) {
   const Case c = load_case(options.case_path);
   const bool full = options.method == "full";
   if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")
@@ -56,7 +56,7 @@ int run_simulate(const SimulateOptions& options) {
   if (full && options.full_field)
     throw UsageError(
         "--full-field: only for the reduced methods (the full run has every dof already)");
-  make_output_directory(options.out, "--out");
+  directories.make(options.out, "--out");
   ReducedRunOptions run;
   run.run.force = options.force;
   run.run.progress = terminal_progress();

@@ -18,7 +18,8 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_aq = mq_factor.solve(m_kq);
   m_mc_factor.compute(casing.mass);
-  if (m_mc_factor.info() != Eigen::Success)
+  // Eigen's LDL^T flags only zero pivots: positive definite means every D_jj > 0.
+  if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
     throw ReducedIntegrationError(
         "reduced integrator: the casing mass matrix is not positive definite");
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
