@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <mutex>
@@ -58,7 +59,11 @@ int make_report(const std::string& dir) {
   pid_t pid = 0;
   if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
   int status = 0;
-  if (waitpid(pid, &status, 0) != pid) return 127;
+  pid_t waited = 0;
+  do
+    waited = waitpid(pid, &status, 0);
+  while (waited < 0 && errno == EINTR);
+  if (waited != pid) return 127;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
