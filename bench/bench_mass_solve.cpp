@@ -12,6 +12,7 @@
 #include "assembler.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
+#include "mass_factor.hpp"
 
 namespace {
 
@@ -80,42 +81,19 @@ void eigen_ldlt_in_place(benchmark::State& state) {
   }
 }
 
-/// CHOLMOD's simplicial LDL^T of the AMD-permuted M (natural ordering, no
-/// postordering), solved by cholmod_solve2 with its workspace reused.
-class ExposedCholmodLdlt : public Eigen::CholmodSimplicialLDLT<SpMat> {
-public:
-  cholmod_factor* factor() { return m_cholmodFactor; }
-};
-
-void cholmod_ldlt_solve2(benchmark::State& state) {
+/// reference/mass_factor (used by the integrator): CHOLMOD's simplicial
+/// LDL^T in its own AMD order, cholmod_solve2 with its workspace reused.
+void mass_factor(benchmark::State& state) {
   const SpMat& m = default_system().m;
-  const Eigen::SimplicialLDLT<SpMat> amd(m);
-  const SpMat permuted = amd.permutationP() * m * amd.permutationP().inverse();
-  ExposedCholmodLdlt solver;
-  cholmod_common& common = solver.cholmod();
-  common.nmethods = 1;
-  common.method[0].ordering = CHOLMOD_NATURAL;
-  common.postorder = 0;
-  solver.compute(permuted);
-  if (solver.info() != Eigen::Success) state.SkipWithError("factorization failed");
-  const auto n = static_cast<size_t>(m.rows());
-  cholmod_dense* b = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &common);
+  rsi::MassFactor factor(m);
   const Eigen::VectorXd r = Eigen::VectorXd::Random(m.rows());
-  Eigen::Map<Eigen::VectorXd>(static_cast<double*>(b->x), m.rows()) = r;
-  cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
+  Eigen::VectorXd x(m.rows());
   for (auto _ : state) {
-    cholmod_solve2(CHOLMOD_LDLt, solver.factor(), b, nullptr, &x, nullptr, &y, &e, &common);
-    benchmark::DoNotOptimize(x->x);
+    x = r;
+    factor.solve_in_place(x);
+    benchmark::DoNotOptimize(x.data());
   }
-  // Same answer as Eigen's factor of the same permuted matrix.
-  const Eigen::VectorXd reference =
-      amd.permutationP() * Eigen::VectorXd(amd.solve(amd.permutationP().inverse() * r));
-  const Eigen::VectorXd got = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(x->x), m.rows());
-  state.counters["relative_difference"] = (got - reference).norm() / reference.norm();
-  cholmod_free_dense(&x, &common);
-  cholmod_free_dense(&y, &common);
-  cholmod_free_dense(&e, &common);
-  cholmod_free_dense(&b, &common);
+  state.counters["nnz_L"] = factor.nonzeros_l();
 }
 
 template <int Options> void product(benchmark::State& state) {
@@ -138,7 +116,7 @@ BENCHMARK(solve<Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::COLAMDOrdering
 BENCHMARK(solve<Eigen::CholmodSimplicialLLT<SpMat>>)->Name("mass_solve/cholmod_simplicial_llt");
 BENCHMARK(cholmod_supernodal)->Name("mass_solve/cholmod_supernodal_llt");
 BENCHMARK(eigen_ldlt_in_place)->Name("mass_solve/eigen_ldlt_permuted_in_place");
-BENCHMARK(cholmod_ldlt_solve2)->Name("mass_solve/cholmod_ldlt_permuted_solve2");
+BENCHMARK(mass_factor)->Name("mass_solve/rsi_mass_factor_cholmod_ldlt_solve2");
 BENCHMARK(product<Eigen::ColMajor>)->Name("stiffness_product/col_major");
 BENCHMARK(product<Eigen::RowMajor>)->Name("stiffness_product/row_major");
 

@@ -78,9 +78,11 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
   // Mode counts against the model before any run (the case loader only
   // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
   // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
+  int disk_dofs = 0;
   {
     const BladedDisk bd = assemble_bladed_disk(c);
-    const int most = bd.n_dofs() - static_cast<int>(bd.boundary.size());
+    disk_dofs = bd.n_dofs();
+    const int most = disk_dofs - static_cast<int>(bd.boundary.size());
     for (const CampaignRun& r : c.campaign)
       if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
         throw UsageError(c.source + ": key 'campaign': " + r.method + " with " +
@@ -146,7 +148,6 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
   }
   write_text_file(options.out + "/convergence.csv", csv.str());
   // Paper Fig. 3 analogue: the lowest 8 families of the bladed disk.
-  const int disk_dofs = assemble_bladed_disk(c).n_dofs();
   write_text_file(
       options.out + "/modes-bladed-disk.csv",
       modes_table(c, "bladed-disk", std::min(8 * c.bladed_disk.n_blades, disk_dofs)).csv);

@@ -234,6 +234,11 @@ int main(int argc, char** argv) {
   }
   // Status of the subcommand: the exception kinds map to exit 2 (bad input) or 3 (numerical).
   rsi::OutputDirectories directories;
+  // Exit status by exception kind: 2 bad input, 3 numerical failure, 1 else.
+  auto failure = [](const char* kind, const std::exception& e, int status) {
+    std::fprintf(stderr, "rsi: %s: %s\n", kind, e.what());
+    return status;
+  };
   auto run = [&]() -> int {
     try {
       if (*modes_cmd) return rsi::run_modes(modes, directories);
@@ -243,35 +248,25 @@ int main(int argc, char** argv) {
       if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
       if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
     } catch (const rsi::CaseError& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 2;
+      return failure("error", e, 2);
     } catch (const rsi::UsageError& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 2;
+      return failure("error", e, 2);
     } catch (const rsi::OutputError& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 2;
+      return failure("error", e, 2);
     } catch (const rsi::ReductionError& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 2;
-    } catch (const rsi::ReducedIntegrationError& e) {
-      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-      return 3;
+      return failure("error", e, 2);
     } catch (const rsi::StabilityError& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 2;
+      return failure("error", e, 2);
+    } catch (const rsi::ReducedIntegrationError& e) {
+      return failure("numerical failure", e, 3);
     } catch (const rsi::IntegrationError& e) {
-      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-      return 3;
+      return failure("numerical failure", e, 3);
     } catch (const rsi::MassFactorError& e) {
-      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-      return 3;
+      return failure("numerical failure", e, 3);
     } catch (const rsi::ModalError& e) {
-      std::fprintf(stderr, "rsi: numerical failure: %s\n", e.what());
-      return 3;
+      return failure("numerical failure", e, 3);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "rsi: error: %s\n", e.what());
-      return 1;
+      return failure("error", e, 1);
     }
     return 1;
   };

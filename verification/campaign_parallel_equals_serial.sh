@@ -12,13 +12,8 @@ rsi=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-/usr/bin/python3 - "$src/data/cases/batailly2007.json" "$work/short.json" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-d["time"]["duration"] = 0.005
-d["campaign"] = [{"method": "cb", "modes": [0, 10]}, {"method": "ccm", "modes": [0]}]
-json.dump(d, open(sys.argv[2], "w"), indent=2)
-PY
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/short.json" \
+  time.duration=0.005 'campaign=[{"method": "cb", "modes": [0, 10]}, {"method": "ccm", "modes": [0]}]'
 for jobs in 1 2; do
   report=--no-report
   [ $jobs -eq 2 ] && report=

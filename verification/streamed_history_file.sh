@@ -13,20 +13,12 @@ rsi=$1
 src=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-/usr/bin/python3 - "$src/data/cases/batailly2007.json" "$work" <<'PY'
-import json, sys
-d = json.load(open(sys.argv[1]))
-d["time"]["duration"] = 0.005
-d["time"]["output_every"] = 7
-d["campaign"] = [{"method": "cb", "modes": [10]}]
-json.dump(d, open(sys.argv[2] + "/short.json", "w"), indent=2)
-d["bladed_disk"]["kink_angle_deg"] = -d["bladed_disk"]["kink_angle_deg"]
-d["time"]["duration"] = 0.008
-json.dump(d, open(sys.argv[2] + "/sprag.json", "w"), indent=2)
-d = json.load(open(sys.argv[1]))
-d["time"]["step"] = 1e-5
-json.dump(d, open(sys.argv[2] + "/unstable.json", "w"), indent=2)
-PY
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/short.json" \
+  time.duration=0.005 time.output_every=7 'campaign=[{"method": "cb", "modes": [10]}]'
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/sprag.json" \
+  time.duration=0.008 time.output_every=7 bladed_disk.kink_angle_deg=-1.0
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/unstable.json" \
+  time.step=1e-5
 failures=0
 fail() {
   echo "FAIL $*"
