@@ -44,7 +44,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   // round-off floor (Bladh et al. 2003): sum over the discarded modes
   // instead, Phi_2 Omega_2^-1 Phi_2B^T, which is the same R without cancellation.
   Eigen::MatrixXd phi1;
-  Eigen::MatrixXd r;
+  AccurateMatrix r; // r.low: what K^-1 E_B misses below its last bit (sparse path)
   if (few_modes(psi, n) == ModalSolver::dense) {
     const Modes all = lowest_modes(stiffness, mass, n, ModalSolver::dense);
     // The tail sum needs no K^-1, but it is R only for a nonsingular K: a
@@ -60,8 +60,8 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     }
     phi1 = all.shapes.leftCols(psi);
     const Eigen::MatrixXd phi2 = all.shapes.rightCols(n - psi);
-    r = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
-        take_rows(phi2, p.boundary).transpose();
+    r.value = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
+              take_rows(phi2, p.boundary).transpose();
   } else {
     r = solve_positive_definite(
         stiffness, place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)),
@@ -70,11 +70,11 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     if (psi > 0) {
       const Modes free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
       phi1 = free.shapes;
-      r -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
-           take_rows(phi1, p.boundary).transpose();
+      r.value -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
+                 take_rows(phi1, p.boundary).transpose();
     }
   }
-  const Eigen::MatrixXd r_b = take_rows(r, p.boundary);
+  const Eigen::MatrixXd r_b = take_rows(r.value, p.boundary);
 
   // cond(R_B): R_B is symmetric positive semi-definite in exact arithmetic.
   const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
@@ -92,17 +92,30 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     throw ReductionError(message.str());
   }
   const Eigen::LDLT<Eigen::MatrixXd> r_b_factor(r_b);
-  // Columns for q_B: R(:, B) R_B^-1 (identity on the boundary rows).
-  const Eigen::MatrixXd attachment = r_b_factor.solve(r.transpose()).transpose();
+  // Columns for q_B: R(:, B) R_B^-1, identity on the boundary rows (exactly,
+  // so q_B is u_B); interior rows A_I from R_B^T A_I^T = R_I^T, refined to the
+  // last bit with R known to twice working precision: with psi = 0 they are
+  // then the constraint modes rounded, as CB's (SPEC V4).
+  const auto transposed_rows = [&](const Eigen::MatrixXd& a) {
+    return a.size() > 0 ? Eigen::MatrixXd(take_rows(a, p.interior).transpose()) : a;
+  };
+  const Eigen::MatrixXd r_b_low =
+      r.low.size() > 0 ? Eigen::MatrixXd(take_rows(r.low, p.boundary).transpose()) : r.low;
+  const Eigen::MatrixXd attachment_interior =
+      accurate_solve(
+          r_b.transpose().sparseView(), r_b_low, {transposed_rows(r.value), transposed_rows(r.low)},
+          [&](const Eigen::MatrixXd& rhs) { return Eigen::MatrixXd(r_b_factor.solve(rhs)); },
+          "Craig-Chang-Martinez: the attachment modes R(:, B) R_B^-1")
+          .value.transpose();
+  const Eigen::MatrixXd attachment = place_rows(n, p.interior, attachment_interior) +
+                                     place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
   Eigen::MatrixXd t(n, nb + psi);
   t.leftCols(nb) = attachment;
   if (psi > 0) t.rightCols(psi) = phi1 - attachment * take_rows(phi1, p.boundary);
-  // Exact zeros on the boundary rows of the modal columns and identity on the
-  // attachment ones hold to round-off; set them exactly so q_B is u_B.
-  for (int b = 0; b < nb; ++b) {
-    t.row(p.boundary[b]).setZero();
-    t(p.boundary[b], b) = 1.0;
-  }
+  // The modal columns vanish on the boundary rows to round-off; set them
+  // exactly so q_B is u_B.
+  for (int b : p.boundary)
+    t.row(b).tail(psi).setZero();
   basis.transformation = t;
   finish_basis(stiffness, mass, nb, 0, start, basis);
   return basis;

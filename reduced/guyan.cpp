@@ -54,27 +54,31 @@ public:
 
 } // namespace
 
-Eigen::MatrixXd solve_positive_definite(const Eigen::SparseMatrix<double>& a,
-                                        const Eigen::Ref<const Eigen::MatrixXd>& b,
-                                        const std::string& name, const std::string& remedy) {
+AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
+                                       const Eigen::MatrixXd& b, const std::string& name,
+                                       const std::string& remedy) {
   CheckedCholmod factor(a);
   const std::string defect = factor.defect();
   if (!defect.empty())
     throw ReductionError(name + " is singular or indefinite (" + defect + "); " + remedy);
-  Eigen::MatrixXd x = factor.solve(b);
-  if (factor.info() != Eigen::Success) throw ReductionError(name + ": CHOLMOD solve failed");
-  return x;
+  const WorkingSolve solve = [&](const Eigen::MatrixXd& r) {
+    Eigen::MatrixXd x = factor.solve(r);
+    if (factor.info() != Eigen::Success) throw ReductionError(name + ": CHOLMOD solve failed");
+    return x;
+  };
+  return accurate_solve(a, {}, {b, {}}, solve, name);
 }
 
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p) {
   const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
   const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
-  return -solve_positive_definite(k_ii, Eigen::MatrixXd(k_ib),
-                                  "constraint modes: the interior stiffness K_II (" +
-                                      std::to_string(p.n_interior()) + " x " +
-                                      std::to_string(p.n_interior()) + ", boundary dofs held)",
-                                  "the boundary must hold the part against every rigid motion "
-                                  "(is the hub clamped?)");
+  return solve_positive_definite(k_ii, -Eigen::MatrixXd(k_ib),
+                                 "constraint modes: the interior stiffness K_II (" +
+                                     std::to_string(p.n_interior()) + " x " +
+                                     std::to_string(p.n_interior()) + ", boundary dofs held)",
+                                 "the boundary must hold the part against every rigid motion "
+                                 "(is the hub clamped?)")
+      .value;
 }
 
 void finish_basis(const Eigen::SparseMatrix<double>& stiffness,

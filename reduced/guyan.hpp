@@ -10,24 +10,27 @@
 
 #include <Eigen/SparseCore>
 
+#include "accurate_solve.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
 
 /// X = A^-1 B for a matrix A that must be symmetric positive definite, by a
-/// sparse Cholesky factorization (CHOLMOD). CHOLMOD's simplicial LDL^T does
+/// sparse Cholesky factorization (CHOLMOD) and iterative refinement to the
+/// last bit (accurate_solve). CHOLMOD's simplicial LDL^T does
 /// not stop at a negative or zero pivot, and a singular A factorizes with
 /// round-off pivots, so the factor is checked: a pivot d <= 0 (A indefinite)
 /// or a reciprocal condition estimate min|d| / max|d| < n eps (A singular to
 /// working precision) throws ReductionError "`name` is singular or
 /// indefinite (...); `remedy`", with the column of A and the pivot, or the
 /// estimate.
-Eigen::MatrixXd solve_positive_definite(const Eigen::SparseMatrix<double>& a,
-                                        const Eigen::Ref<const Eigen::MatrixXd>& b,
-                                        const std::string& name, const std::string& remedy);
+AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
+                                       const Eigen::MatrixXd& b, const std::string& name,
+                                       const std::string& remedy);
 
-/// Psi_I = -K_II^-1 K_IB (n_I x n_B), by solve_positive_definite. Throws
+/// Psi_I = -K_II^-1 K_IB (n_I x n_B), by solve_positive_definite: rounded
+/// to the last bit, so it does not depend on the factor's round-off. Throws
 /// ReductionError naming K_II if it is singular or indefinite (the boundary
 /// does not hold the part against every rigid motion).
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p);
