@@ -1,6 +1,8 @@
 #include "tip_casing_contact.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "ring_element.hpp"
 
@@ -19,6 +21,20 @@ TipCasingContact::TipCasingContact(const BladedDisk& bladed_disk, const Casing& 
     m_tip_angle0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
   for (int first : casing.node_first_dof)
     m_casing_node_dof.push_back(first < 0 ? -1 : bladed_disk.n_dofs() + first);
+}
+
+std::vector<int> TipCasingContact::dofs_read(int n_dofs) const {
+  std::vector<int> dofs(m_tip_radial);
+  dofs.insert(dofs.end(), m_tip_tangential.begin(), m_tip_tangential.end());
+  for (int first : m_casing_node_dof)
+    if (first >= 0)
+      for (int d = 0; d < 4; ++d) // u, u_s, v, v_s
+        dofs.push_back(first + d);
+  for (int dof : dofs)
+    if (dof < 0 || dof >= n_dofs)
+      throw std::invalid_argument("TipCasingContact: dof " + std::to_string(dof) +
+                                  " outside a system of " + std::to_string(n_dofs) + " dofs");
+  return dofs;
 }
 
 void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
