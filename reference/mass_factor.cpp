@@ -31,7 +31,7 @@ public:
 /// The level of each column of L (CHOLMOD's simplicial LDL^T, AMD order):
 /// 0 for a column no other precedes (l_jk = 0 for all k < j), else one more
 /// than the highest column its row reads.
-std::vector<int> levels(const cholmod_factor& f) {
+std::vector<int> column_levels(const cholmod_factor& f) {
   const int n = static_cast<int>(f.n);
   const auto* p = static_cast<const int*>(f.p);
   const auto* nz = static_cast<const int*>(f.nz);
@@ -108,12 +108,13 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
 
   // P: AMD, then the columns sorted by component and level (ties kept in
   // AMD order), so that each component is a contiguous block.
-  const std::vector<int> level_of_column = levels(f);
+  const std::vector<int> level_of_column = column_levels(f);
   const std::vector<int> component_of_column = components(f);
   const std::vector<int> new_order = sorted_by(
       n, [&](int j) { return std::make_pair(component_of_column[j], level_of_column[j]); });
-  std::vector<int> level(n); // level[i]: of the column now at position i
-  std::vector<int> to(n);    // AMD column j -> position to[j]
+  std::vector<int>& level = m_level; // of the column now at position i
+  level.resize(n);
+  std::vector<int> to(n); // AMD column j -> position to[j]
   m_block_start.assign(1, 0);
   for (int k = 0; k < n; ++k) {
     to[new_order[k]] = k;
@@ -144,12 +145,14 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   // Forward: level by level upward; backward: downward. Within a level the
   // rows are independent, so they are taken shortest first (longer runs of
   // one length).
-  m_forward = SparseRows(m_l_rows, sorted_by(n, [&](int i) {
-                           return std::make_pair(level[i], m_l_rows.row(i).nonZeros());
-                         }));
-  m_backward = SparseRows(lt_rows, sorted_by(n, [&](int i) {
-                            return std::make_pair(-level[i], lt_rows.row(i).nonZeros());
-                          }));
+  m_forward = SparseRows(
+      m_l_rows,
+      sorted_by(n, [&](int i) { return std::make_pair(level[i], m_l_rows.row(i).nonZeros()); }),
+      level);
+  m_backward = SparseRows(
+      lt_rows,
+      sorted_by(n, [&](int i) { return std::make_pair(-level[i], lt_rows.row(i).nonZeros()); }),
+      level);
 }
 
 Eigen::SparseMatrix<double> MassFactor::permuted(const Eigen::SparseMatrix<double>& a) const {
@@ -161,9 +164,16 @@ void MassFactor::solve_in_place(Eigen::Ref<Eigen::VectorXd> r) const {
   if (r.size() != n_dofs())
     throw std::invalid_argument("MassFactor: the vector must have one entry per dof");
   double* x = r.data();
-  const double* inverse_d = m_inverse_d.data();
   // L y = r: y_i = r_i - sum_{j<i} l_ij y_j, each row after those it reads.
   m_forward.for_each_row(x, [x](int i, double sum) { x[i] -= sum; });
+  solve_upper_in_place(r);
+}
+
+void MassFactor::solve_upper_in_place(Eigen::Ref<Eigen::VectorXd> y) const {
+  if (y.size() != n_dofs())
+    throw std::invalid_argument("MassFactor: the vector must have one entry per dof");
+  double* x = y.data();
+  const double* inverse_d = m_inverse_d.data();
   // L^T x = D^-1 y: x_j = y_j / D_jj - sum_{i>j} l_ij x_i, from the top level down.
   m_backward.for_each_row(x,
                           [x, inverse_d](int j, double sum) { x[j] = x[j] * inverse_d[j] - sum; });

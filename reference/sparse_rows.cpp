@@ -20,25 +20,50 @@ std::vector<int> shortest_first(const RowMajorMatrix& a) {
 } // namespace
 
 SparseRows::SparseRows(const RowMajorMatrix& a)
-    : SparseRows(a, shortest_first(a)) {}
+    : SparseRows(a, shortest_first(a), std::vector<int>(static_cast<size_t>(a.rows()), 0)) {}
 
-SparseRows::SparseRows(const RowMajorMatrix& a, const std::vector<int>& order)
+SparseRows::SparseRows(const RowMajorMatrix& a, const std::vector<int>& order,
+                       const std::vector<int>& stage)
     : m_rows(a.rows())
     , m_cols(a.cols()) {
-  for (int i : order) {
+  if (static_cast<Eigen::Index>(stage.size()) != a.rows())
+    throw std::invalid_argument("SparseRows: one stage per row of A");
+  for (int i : order)
     if (i < 0 || i >= a.rows())
       throw std::invalid_argument("SparseRows: row " + std::to_string(i) + " outside 0.." +
                                   std::to_string(a.rows() - 1));
-    const int length = static_cast<int>(a.row(i).nonZeros());
-    if (m_runs.empty() || m_runs.back().length != length)
-      m_runs.push_back(
-          {static_cast<int>(m_row.size()), 0, length, static_cast<int>(m_index.size())});
-    ++m_runs.back().n_rows;
-    m_row.push_back(i);
-    for (RowMajorMatrix::InnerIterator it(a, i); it; ++it) {
-      m_index.push_back(static_cast<int>(it.col()));
-      m_value.push_back(it.value());
+  auto length = [&](int i) { return static_cast<int>(a.row(i).nonZeros()); };
+  for (size_t first = 0; first < order.size();) {
+    // The run: rows of one length and one stage, consecutive in `order`.
+    size_t end = first + 1;
+    while (end < order.size() && length(order[end]) == length(order[first]) &&
+           stage[order[end]] == stage[order[first]])
+      ++end;
+    const int run_length = length(order[first]);
+    m_runs.push_back({static_cast<int>(m_row.size()), static_cast<int>(end - first), run_length,
+                      static_cast<int>(m_index.size())});
+    size_t k = first;
+    if (run_length >= 1 && run_length <= max_unrolled)
+      for (; k + 1 < end; k += 2) { // pairs, entries interleaved
+        m_row.push_back(order[k]);
+        m_row.push_back(order[k + 1]);
+        RowMajorMatrix::InnerIterator it0(a, order[k]);
+        RowMajorMatrix::InnerIterator it1(a, order[k + 1]);
+        for (; it0; ++it0, ++it1) {
+          m_index.push_back(static_cast<int>(it0.col()));
+          m_index.push_back(static_cast<int>(it1.col()));
+          m_value.push_back(it0.value());
+          m_value.push_back(it1.value());
+        }
+      }
+    for (; k < end; ++k) { // the odd row, or rows too long to unroll
+      m_row.push_back(order[k]);
+      for (RowMajorMatrix::InnerIterator it(a, order[k]); it; ++it) {
+        m_index.push_back(static_cast<int>(it.col()));
+        m_value.push_back(it.value());
+      }
     }
+    first = end;
   }
 }
 
