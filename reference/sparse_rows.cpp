@@ -43,20 +43,19 @@ SparseRows::SparseRows(const RowMajorMatrix& a, const std::vector<int>& order,
     m_runs.push_back({static_cast<int>(m_row.size()), static_cast<int>(end - first), run_length,
                       static_cast<int>(m_index.size())});
     size_t k = first;
-    if (run_length >= 1 && run_length <= max_unrolled)
-      for (; k + 1 < end; k += 2) { // pairs, entries interleaved
-        m_row.push_back(order[k]);
-        m_row.push_back(order[k + 1]);
-        RowMajorMatrix::InnerIterator it0(a, order[k]);
-        RowMajorMatrix::InnerIterator it1(a, order[k + 1]);
-        for (; it0; ++it0, ++it1) {
-          m_index.push_back(static_cast<int>(it0.col()));
-          m_index.push_back(static_cast<int>(it1.col()));
-          m_value.push_back(it0.value());
-          m_value.push_back(it1.value());
-        }
+    for (; k + 1 < end; k += 2) { // pairs, entries interleaved
+      m_row.push_back(order[k]);
+      m_row.push_back(order[k + 1]);
+      RowMajorMatrix::InnerIterator it0(a, order[k]);
+      RowMajorMatrix::InnerIterator it1(a, order[k + 1]);
+      for (; it0; ++it0, ++it1) {
+        m_index.push_back(static_cast<int>(it0.col()));
+        m_index.push_back(static_cast<int>(it1.col()));
+        m_value.push_back(it0.value());
+        m_value.push_back(it1.value());
       }
-    for (; k < end; ++k) { // the odd row, or rows too long to unroll
+    }
+    for (; k < end; ++k) { // the odd row
       m_row.push_back(order[k]);
       for (RowMajorMatrix::InnerIterator it(a, order[k]); it; ++it) {
         m_index.push_back(static_cast<int>(it.col()));

@@ -71,12 +71,11 @@ public:
   template <class Store> void for_each_row(const double* x, Store&& store) const;
 
 private:
-  static constexpr int max_unrolled = 16; ///< longer rows take a loop, one at a time
+  static constexpr int max_unrolled = 16; ///< longer rows take a loop
 
   /// Rows of one length and one stage, stored from first_entry on: pairs of
   /// rows with their entries interleaved (row 2p's k-th entry, then row
-  /// 2p+1's), then the odd row if any; rows longer than max_unrolled are
-  /// stored one after the other.
+  /// 2p+1's), then the odd row if any.
   struct Run {
     int first_row; ///< index into m_row
     int n_rows;
@@ -105,19 +104,63 @@ private:
   std::vector<Run> m_runs;
 };
 
-/// The sum of the Length products value[k] x[index[k]], in up to four
-/// partial sums started from the first products (no add of a zero).
-template <int Length>
-__attribute__((always_inline)) inline double unrolled_dot(const double* value, const int* index,
+/// Two doubles summed lane by lane: an SSE2 register where the processor
+/// has one (GCC's vector + is addpd), else a pair of doubles (the same
+/// arithmetic, lane by lane).
+#if defined(__SSE2__)
+using Lanes = __m128d;
+/// value[0] x[index[0]] and value[1] x[index[1]].
+__attribute__((always_inline)) inline Lanes lane_products(const double* value, const int* index,
                                                           const double* x) {
+  return _mm_mul_pd(_mm_loadu_pd(value), _mm_loadh_pd(_mm_load_sd(x + index[0]), x + index[1]));
+}
+inline double first_lane(Lanes a) {
+  return _mm_cvtsd_f64(a);
+}
+inline double second_lane(Lanes a) {
+  return _mm_cvtsd_f64(_mm_unpackhi_pd(a, a));
+}
+#else
+struct Lanes {
+  double first, second;
+};
+inline Lanes lane_products(const double* value, const int* index, const double* x) {
+  return {value[0] * x[index[0]], value[1] * x[index[1]]};
+}
+inline Lanes operator+(Lanes a, Lanes b) {
+  return {a.first + b.first, a.second + b.second};
+}
+inline double first_lane(Lanes a) {
+  return a.first;
+}
+inline double second_lane(Lanes a) {
+  return a.second;
+}
+#endif
+
+/// The sum of the Length products value[k] x[index[k]] (one row, T =
+/// double, stride 1) or of two rows whose entries are interleaved (T =
+/// Lanes, stride 2: the first row's k-th entry at 2k, the second's at
+/// 2k + 1), in up to four partial sums started from the first products (no
+/// add of a zero), so that both give a row the same bits.
+template <int Length, class T>
+__attribute__((always_inline)) inline T unrolled_dot(const double* value, const int* index,
+                                                     const double* x) {
+  constexpr int stride = std::is_same_v<T, double> ? 1 : 2;
+  auto product = [&](int k) -> T {
+    if constexpr (stride == 1)
+      return value[k] * x[index[k]];
+    else
+      return lane_products(value + 2 * k, index + 2 * k, x);
+  };
   constexpr int sums = Length < 4 ? Length : 4;
-  double s[sums];
+  T s[sums];
 #pragma GCC unroll 4
   for (int k = 0; k < sums; ++k)
-    s[k] = value[k] * x[index[k]];
+    s[k] = product(k);
 #pragma GCC unroll 16
   for (int k = sums; k < Length; ++k)
-    s[k % sums] += value[k] * x[index[k]];
+    s[k % sums] = s[k % sums] + product(k);
   if constexpr (sums == 1)
     return s[0];
   else if constexpr (sums == 2)
@@ -128,46 +171,29 @@ __attribute__((always_inline)) inline double unrolled_dot(const double* value, c
     return (s[0] + s[1]) + (s[2] + s[3]);
 }
 
-/// unrolled_dot of two rows whose entries are interleaved (value[2k],
-/// index[2k] of the first, value[2k + 1], index[2k + 1] of the second):
-/// the same partial sums, lane by lane; the sums go to *first, *second.
-template <int Length>
-__attribute__((always_inline)) inline void unrolled_dot_pair(const double* value, const int* index,
-                                                             const double* x, double* first,
-                                                             double* second) {
-#if defined(__SSE2__)
-  constexpr int sums = Length < 4 ? Length : 4;
-  __m128d s[sums];
-#pragma GCC unroll 4
-  for (int k = 0; k < sums; ++k)
-    s[k] = _mm_mul_pd(_mm_loadu_pd(value + 2 * k),
-                      _mm_loadh_pd(_mm_load_sd(x + index[2 * k]), x + index[2 * k + 1]));
-#pragma GCC unroll 16
-  for (int k = sums; k < Length; ++k)
-    s[k % sums] = _mm_add_pd(
-        s[k % sums], _mm_mul_pd(_mm_loadu_pd(value + 2 * k),
-                                _mm_loadh_pd(_mm_load_sd(x + index[2 * k]), x + index[2 * k + 1])));
-  __m128d total;
-  if constexpr (sums == 1)
-    total = s[0];
-  else if constexpr (sums == 2)
-    total = _mm_add_pd(s[0], s[1]);
-  else if constexpr (sums == 3)
-    total = _mm_add_pd(_mm_add_pd(s[0], s[1]), s[2]);
-  else
-    total = _mm_add_pd(_mm_add_pd(s[0], s[1]), _mm_add_pd(s[2], s[3]));
-  _mm_storel_pd(first, total);
-  _mm_storeh_pd(second, total);
-#else
-  double even_value[Length], odd_value[Length];
-  int even_index[Length], odd_index[Length];
-  for (int k = 0; k < Length; ++k) {
-    even_value[k] = value[2 * k], even_index[k] = index[2 * k];
-    odd_value[k] = value[2 * k + 1], odd_index[k] = index[2 * k + 1];
+/// The same for a length known at run time (>= 4): four partial sums, four
+/// terms a trip, the remainder into the first.
+template <class T>
+__attribute__((always_inline)) inline T looped_dot(const double* value, const int* index,
+                                                   const double* x, int length) {
+  constexpr int stride = std::is_same_v<T, double> ? 1 : 2;
+  auto product = [&](int k) -> T {
+    if constexpr (stride == 1)
+      return value[k] * x[index[k]];
+    else
+      return lane_products(value + 2 * k, index + 2 * k, x);
+  };
+  T s0 = product(0), s1 = product(1), s2 = product(2), s3 = product(3);
+  int k = 4;
+  for (; k + 3 < length; k += 4) {
+    s0 = s0 + product(k);
+    s1 = s1 + product(k + 1);
+    s2 = s2 + product(k + 2);
+    s3 = s3 + product(k + 3);
   }
-  *first = unrolled_dot<Length>(even_value, even_index, x);
-  *second = unrolled_dot<Length>(odd_value, odd_index, x);
-#endif
+  for (; k < length; ++k)
+    s0 = s0 + product(k);
+  return (s0 + s1) + (s2 + s3);
 }
 
 template <int Length, class Store>
@@ -175,36 +201,26 @@ void SparseRows::run_rows(const SparseRows& rows, const Run& run, const double* 
   const int* row = rows.m_row.data() + run.first_row;
   const int* index = rows.m_index.data() + run.first_entry;
   const double* value = rows.m_value.data() + run.first_entry;
-  if constexpr (Length > max_unrolled) { // a loop of four sums, four terms a trip
-    const int length = run.length;
-    for (int r = 0; r < run.n_rows; ++r, index += length, value += length) {
-      double s0 = value[0] * x[index[0]];
-      double s1 = value[1] * x[index[1]];
-      double s2 = value[2] * x[index[2]];
-      double s3 = value[3] * x[index[3]];
-      int k = 4;
-      for (; k + 3 < length; k += 4) {
-        s0 += value[k] * x[index[k]];
-        s1 += value[k + 1] * x[index[k + 1]];
-        s2 += value[k + 2] * x[index[k + 2]];
-        s3 += value[k + 3] * x[index[k + 3]];
-      }
-      for (; k < length; ++k)
-        s0 += value[k] * x[index[k]];
-      store(row[r], (s0 + s1) + (s2 + s3));
-    }
-  } else if constexpr (Length == 0) {
+  if constexpr (Length == 0) {
     for (int r = 0; r < run.n_rows; ++r)
       store(row[r], 0.0);
   } else {
+    constexpr bool unrolled = Length <= max_unrolled;
+    const int length = unrolled ? Length : run.length;
+    auto dot = [&](auto lanes) {
+      using T = decltype(lanes);
+      if constexpr (unrolled)
+        return unrolled_dot<Length, T>(value, index, x);
+      else
+        return looped_dot<T>(value, index, x, length);
+    };
     int r = 0;
-    for (; r + 1 < run.n_rows; r += 2, index += 2 * Length, value += 2 * Length) {
-      double first, second;
-      unrolled_dot_pair<Length>(value, index, x, &first, &second);
-      store(row[r], first);
-      store(row[r + 1], second);
+    for (; r + 1 < run.n_rows; r += 2, index += 2 * length, value += 2 * length) {
+      const Lanes sums = dot(Lanes{});
+      store(row[r], first_lane(sums));
+      store(row[r + 1], second_lane(sums));
     }
-    if (r < run.n_rows) store(row[r], unrolled_dot<Length>(value, index, x));
+    if (r < run.n_rows) store(row[r], dot(0.0));
   }
 }
 
