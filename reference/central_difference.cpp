@@ -4,8 +4,6 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/LU>
-
 namespace rsi {
 
 namespace {
@@ -32,27 +30,47 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
     , m_position(m_mass_factor.position())
     , m_k(m_mass_factor.permuted(stiffness))
     , m_m(m_mass_factor.permuted(mass))
-    , m_inverse_columns(mass.rows())
-    , m_sparse_inverse_columns(mass.rows()) {}
+    , m_k_rows(m_k)
+    , m_residual_solve(m_mass_factor, m_k)
+    , m_law_dofs(law.dofs_read(static_cast<int>(mass.rows())))
+    , m_inverse_columns(mass.rows()) {
+  for (int dof : m_law_dofs) {
+    if (dof < 0 || dof >= mass.rows())
+      throw std::invalid_argument("CentralDifference: the contact law reads dof " +
+                                  std::to_string(dof) + ", outside the system");
+    m_law_positions.push_back(m_position(dof));
+  }
+}
 
 void CentralDifference::to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
                                     Eigen::VectorXd& velocity) const {
-  physical.resize(permuted.size());
-  velocity.resize(permuted.size());
   const double rate = 1.0 / m_dt;
-  for (Eigen::Index i = 0; i < permuted.size(); ++i) {
-    physical(i) = permuted(m_position(i));
+  for (size_t k = 0; k < m_law_dofs.size(); ++k) {
+    const int i = m_law_dofs[k];
+    physical(i) = permuted(m_law_positions[k]);
     velocity(i) = (physical(i) - m_x(i)) * rate;
   }
 }
 
-const Eigen::VectorXd& CentralDifference::inverse_mass_column(int dof) {
-  Eigen::VectorXd& column = m_inverse_columns[dof];
-  if (column.size() == 0) {
-    column = Eigen::VectorXd::Zero(m_m.rows());
-    column(m_position(dof)) = 1.0;
-    apply_inverse_mass(column);
-    m_sparse_inverse_columns[dof] = column.sparseView();
+const Eigen::VectorXd& CentralDifference::displacement() const {
+  if (m_displacement_step != m_n) {
+    m_displacement.resize(m_u.size());
+    for (Eigen::Index i = 0; i < m_u.size(); ++i)
+      m_displacement(i) = m_u(m_position(i));
+    m_displacement_step = m_n;
+  }
+  return m_displacement;
+}
+
+const CentralDifference::InverseMassColumn& CentralDifference::inverse_mass_column(int dof) {
+  InverseMassColumn& column = m_inverse_columns[dof];
+  if (column.values.size() == 0) {
+    Eigen::VectorXd full = Eigen::VectorXd::Zero(m_m.rows());
+    full(m_position(dof)) = 1.0;
+    apply_inverse_mass(full);
+    const auto [first, size] = m_mass_factor.block(m_position(dof));
+    column.first = first;
+    column.values = full.segment(first, size);
   }
   return column;
 }
@@ -61,7 +79,7 @@ double CentralDifference::contact_flexibility(const SparseRow& gradient,
                                               const SparseRow& direction) {
   double sum = 0.0;
   for (const auto& [b, db] : direction) {
-    const Eigen::VectorXd& column = inverse_mass_column(b);
+    const InverseMassColumn& column = inverse_mass_column(b);
     for (const auto& [a, ga] : gradient)
       sum += ga * db * column(m_position(a));
   }
@@ -83,7 +101,9 @@ double CentralDifference::flops_per_step() const {
 
 double CentralDifference::energy() const {
   const Eigen::VectorXd v = (m_u - m_u_prev) / m_dt;
-  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_ku);
+  Eigen::VectorXd ku(m_u.size()); // K' u_n
+  m_k_rows.multiply(m_u, ku);
+  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(ku);
 }
 
 void CentralDifference::set_force(const Eigen::Ref<const Eigen::VectorXd>& f) {
@@ -102,71 +122,82 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   m_u = Eigen::VectorXd::Zero(n);
   m_u_prev = 0.5 * m_dt * m_dt * m_force;
   apply_inverse_mass(m_u_prev);
-  m_ku = Eigen::VectorXd::Zero(n);
   m_x = Eigen::VectorXd::Zero(n);
-  m_lambda = Eigen::VectorXd::Zero(m_law.n_constraints());
-  m_law.evaluate(m_x, Eigen::VectorXd::Zero(n), 0.0, m_state);
+  m_x_next = Eigen::VectorXd::Zero(n);
+  m_velocity = Eigen::VectorXd::Zero(n);
+  m_displacement_step = -1;
+  const int nc = m_law.n_constraints();
+  m_lambda = Eigen::VectorXd::Zero(nc);
+  m_active.assign(nc, 0);
+  m_w.resize(nc, nc);
+  m_w_step = Eigen::MatrixXi::Constant(nc, nc, -1);
+  m_law.evaluate(m_x, m_velocity, 0.0, m_state);
   m_gap = m_state.gap;
   m_initial_energy = energy();
   m_external_work = 0.0;
   m_contact_work = 0.0;
 }
 
-Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
-                                                    Eigen::VectorXd& correction) {
+void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd& lambda,
+                                         Eigen::VectorXd& correction) {
   const int nc = m_law.n_constraints();
-  std::vector<bool> active(nc);
+  lambda.setZero(nc);
+  bool any = false;
   for (int k = 0; k < nc; ++k)
-    active[k] = s.gap(k) < 0.0;
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(nc);
-  if (std::none_of(active.begin(), active.end(), [](bool a) { return a; })) return lambda;
+    any |= (m_active[k] = s.gap(k) < 0.0);
+  if (!any) return;
   // W_ij = dt^2 G_i M^-1 D_j^T for the active pairs met, computed once per step.
-  Eigen::MatrixXd w = Eigen::MatrixXd::Constant(nc, nc, std::nan(""));
   auto entry = [&](int i, int j) {
-    if (std::isnan(w(i, j))) w(i, j) = contact_flexibility(s.gradient[i], s.direction[j]);
-    return w(i, j);
-  };
-  for (int iteration = 0; iteration <= 4 * nc + 4; ++iteration) {
-    std::vector<int> idx;
-    for (int k = 0; k < nc; ++k)
-      if (active[k]) idx.push_back(k);
-    const int na = static_cast<int>(idx.size());
-    if (na == 0) return lambda;
-    Eigen::MatrixXd wa(na, na);
-    Eigen::VectorXd rhs(na);
-    for (int a = 0; a < na; ++a) {
-      rhs(a) = -s.gap(idx[a]);
-      for (int b = 0; b < na; ++b)
-        wa(a, b) = entry(idx[a], idx[b]);
+    if (m_w_step(i, j) != m_n) {
+      m_w(i, j) = contact_flexibility(s.gradient[i], s.direction[j]);
+      m_w_step(i, j) = m_n;
     }
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(wa);
-    if (!lu.isInvertible())
+    return m_w(i, j);
+  };
+  std::vector<int>& idx = m_active_index;
+  for (int iteration = 0; iteration <= 4 * nc + 4; ++iteration) {
+    idx.clear();
+    for (int k = 0; k < nc; ++k)
+      if (m_active[k]) idx.push_back(k);
+    const int na = static_cast<int>(idx.size());
+    if (na == 0) return;
+    m_w_active.resize(na, na);
+    m_rhs.resize(na);
+    for (int a = 0; a < na; ++a) {
+      m_rhs(a) = -s.gap(idx[a]);
+      for (int b = 0; b < na; ++b)
+        m_w_active(a, b) = entry(idx[a], idx[b]);
+    }
+    m_lu.compute(m_w_active);
+    if (!m_lu.isInvertible())
       throw IntegrationError("central differences: singular contact matrix W (" +
                              std::to_string(na) + " active constraints) at step " +
                              std::to_string(m_n + 1));
-    const Eigen::VectorXd la = lu.solve(rhs);
+    m_lambda_active = m_lu.solve(m_rhs);
+    const Eigen::VectorXd& la = m_lambda_active;
     Eigen::Index most_negative = 0;
     if (la.minCoeff(&most_negative) < 0.0) {
-      active[idx[most_negative]] = false;
+      m_active[idx[most_negative]] = false;
       continue;
     }
     // u_{n+1} - u~ = dt^2 M^-1 sum_j lambda_j D_j^T.
     correction.setZero(m_m.rows());
     for (int b = 0; b < na; ++b)
       for (const auto& [dof, c] : s.direction[idx[b]]) {
-        inverse_mass_column(dof); // fills the sparse column
-        correction += (m_dt * m_dt * la(b) * c) * m_sparse_inverse_columns[dof];
+        const InverseMassColumn& column = inverse_mass_column(dof);
+        correction.segment(column.first, column.values.size()) +=
+            (m_dt * m_dt * la(b) * c) * column.values;
       }
     // A constraint the correction would close joins the active set:
     // g_k + G_k (u_{n+1} - u~) = g_k + sum_j W_kj lambda_j < 0.
     bool added = false;
     for (int k = 0; k < nc; ++k)
-      if (!active[k] && s.gap(k) + permuted_dot(s.gradient[k], correction) < 0.0)
-        active[k] = added = true;
+      if (!m_active[k] && s.gap(k) + permuted_dot(s.gradient[k], correction) < 0.0)
+        m_active[k] = added = true;
     if (added) continue;
     for (int b = 0; b < na; ++b)
       lambda(idx[b]) = la(b);
-    return lambda;
+    return;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
                          std::to_string(m_n + 1));
@@ -174,17 +205,13 @@ Eigen::VectorXd CentralDifference::solve_active_set(const ContactState& s,
 
 StepReport CentralDifference::step() {
   const double dt2 = m_dt * m_dt;
-  if (m_forced)
-    m_predicted = m_force - m_ku;
-  else
-    m_predicted = -m_ku;
-  apply_inverse_mass(m_predicted);
-  m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
+  const Eigen::Ref<const Eigen::VectorXd> acceleration = m_residual_solve.apply(m_force, m_u);
+  m_predicted = 2.0 * m_u - m_u_prev + dt2 * acceleration; // M'^-1 (F' - K' u'_n) above
   const double t_next = (m_n + 1) * m_dt;
   to_physical(m_predicted, m_x_next, m_velocity);
   m_law.evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
   const ContactState& s = m_predicted_state;
-  m_lambda = solve_active_set(s, m_correction);
+  solve_active_set(s, m_lambda, m_correction);
   const bool corrected = m_lambda.any();
 
   // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T;
@@ -199,7 +226,6 @@ StepReport CentralDifference::step() {
 
   m_u_prev.swap(m_u);
   m_u.swap(m_predicted);
-  m_ku.noalias() = m_k * m_u;
   ++m_n;
 
   // Monitors at the corrected state (SPEC V5).

@@ -17,25 +17,33 @@
 // right-hand side step by step and E is computed from its definition, so
 // E - E_0 - W_ext - W_contact is round-off unless the scheme is broken.
 //
-// M^-1 is applied through CHOLMOD's LDL^T of P M P^T (reference/mass_factor,
-// AMD order), whose status and pivots are checked. The state is kept in the
-// permuted coordinates u' = P u, with K' = P K P^T and M' = P M P^T, so a
-// step applies the factor with no permutation (permuting a vector in place
-// took 15 % of a step); the contact law and the accessors see physical
-// vectors, gathered once per evaluation. The columns M^-1 e_i met by
-// contact rows are computed once and cached, dense for the entries of W and
-// sparse for the correction. The energy costs a product with M, so it is
-// computed when asked (the works are summed at every step).
+// M^-1 is applied through the LDL^T factor of P M P^T (reference/mass_factor:
+// CHOLMOD's AMD order and factorization, pivots checked, applied by its own
+// triangular solves). The state is kept in the permuted coordinates
+// u' = P u, with K' = P K P^T and M' = P M P^T, so a step applies the factor
+// with no permutation (permuting a vector in place took 15 % of a step); the
+// predictor's M'^-1 (F' - K'u') is one pass over the rows of K' and L
+// (reference/residual_solve). The contact law sees physical vectors, but
+// only the dofs it reads (ContactLaw::dofs_read: 200 of 838 on the default
+// case) are gathered and differentiated per evaluation; the whole physical
+// u_n is gathered only when displacement() is asked for. The columns
+// M^-1 e_i met by contact rows are computed once and cached, each as the
+// contiguous block of the permuted order where it is nonzero. The energy
+// costs products with M and K, so it is computed when asked (the works are
+// summed at every step).
 
 #include <stdexcept>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 #include <Eigen/SparseCore>
 
 #include "contact_law.hpp"
 #include "history.hpp"
 #include "mass_factor.hpp"
+#include "residual_solve.hpp"
+#include "sparse_rows.hpp"
 
 namespace rsi {
 
@@ -63,9 +71,11 @@ public:
 
   int step_index() const { return m_n; } ///< n of the current u_n
   double time() const { return m_n * m_dt; }
-  const Eigen::VectorXd& displacement() const { return m_x; } ///< u_n
-  const Eigen::VectorXd& lambda() const { return m_lambda; }  ///< multipliers of the last step [N]
-  const Eigen::VectorXd& gap() const { return m_gap; }        ///< gaps at u_n
+  /// u_n in physical order, gathered from the state when asked (n loads);
+  /// valid until the next step() or start().
+  const Eigen::VectorXd& displacement() const;
+  const Eigen::VectorXd& lambda() const { return m_lambda; } ///< multipliers of the last step [N]
+  const Eigen::VectorXd& gap() const { return m_gap; }       ///< gaps at u_n
   double energy() const; ///< E_{n-1/2} [J], computed from its definition
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
@@ -76,45 +86,70 @@ public:
   double flops_per_step() const;
 
 private:
+  /// The nonzero block of a column of M'^-1: entries first .. first + size - 1.
+  struct InverseMassColumn {
+    Eigen::Index first = 0;
+    Eigen::VectorXd values;
+    double operator()(Eigen::Index i) const {
+      return i >= first && i < first + values.size() ? values(i - first) : 0.0;
+    }
+  };
   /// M'^-1 e_p(dof) (permuted coordinates) for a physical dof, cached.
-  const Eigen::VectorXd& inverse_mass_column(int dof);
+  const InverseMassColumn& inverse_mass_column(int dof);
   /// dt^2 G M^-1 D^T for one pair of rows, from the cached columns of M^-1.
   double contact_flexibility(const SparseRow& gradient, const SparseRow& direction);
   /// G u for a row G in physical dofs and u in permuted coordinates.
   double permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const;
   /// r <- M'^-1 r through the factor of P M P^T.
   void apply_inverse_mass(Eigen::VectorXd& r) { m_mass_factor.solve_in_place(r); }
-  /// physical <- P^T permuted, velocity <- (physical - u_n) / dt.
+  /// On the dofs the law reads: physical <- P^T permuted, velocity <-
+  /// (physical - u_n) / dt; the other entries are left as they are.
   void to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
                    Eigen::VectorXd& velocity) const;
-  Eigen::VectorXd solve_active_set(const ContactState& predicted, Eigen::VectorXd& correction);
+  /// The multipliers (all constraints) and the correction u_{n+1} - u~ of the
+  /// predicted state, by the active-set iteration of the class comment.
+  void solve_active_set(const ContactState& predicted, Eigen::VectorXd& lambda,
+                        Eigen::VectorXd& correction);
 
-  using RowMajorMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>; // faster products
   double m_dt;
   const ContactLaw& m_law;
   MassFactor m_mass_factor;
   const Eigen::VectorXi& m_position; ///< u'(m_position(i)) = u(i)
   RowMajorMatrix m_k;                ///< K'
   RowMajorMatrix m_m;                ///< M'
-  std::vector<Eigen::VectorXd> m_inverse_columns;
-  /// The same columns without their zeros: M is block diagonal (bladed
-  /// disk, casing), so a casing column has 156 nonzeros of 838.
-  std::vector<Eigen::SparseVector<double>> m_sparse_inverse_columns;
+  SparseRows m_k_rows;               ///< K', stored for its product (energy)
+  ResidualSolve m_residual_solve;    ///< M'^-1 (F' - K' u')
+  std::vector<int> m_law_dofs;       ///< the physical dofs the law reads
+  std::vector<int> m_law_positions;  ///< where they sit in u'
+  /// The columns met so far, by physical dof: M is block diagonal (bladed
+  /// disk, casing), so a casing column has 156 nonzeros of 838, contiguous
+  /// in the permuted order (MassFactor::block).
+  std::vector<InverseMassColumn> m_inverse_columns;
 
   int m_n = 0;
   // Permuted coordinates.
   Eigen::VectorXd m_u;
   Eigen::VectorXd m_u_prev;
-  Eigen::VectorXd m_ku; ///< K' u'_n
   // Work storage, kept to avoid allocations in the step loop.
-  Eigen::VectorXd m_force; ///< F' = P F
+  Eigen::VectorXd m_force; ///< F' = P F (zeros when unforced)
   bool m_forced = false;   ///< F != 0
   Eigen::VectorXd m_predicted;
   Eigen::VectorXd m_correction;
-  // Physical coordinates, for the contact law.
+  // Physical coordinates, for the contact law: only m_law_dofs are kept.
   Eigen::VectorXd m_x;      ///< u_n
   Eigen::VectorXd m_x_next; ///< the prediction, then u_{n+1}
   Eigen::VectorXd m_velocity;
+  mutable Eigen::VectorXd m_displacement; ///< all of u_n, when asked
+  mutable int m_displacement_step = -1;   ///< the n of m_displacement
+  // Active-set storage, reused from step to step.
+  std::vector<char> m_active;
+  std::vector<int> m_active_index;
+  Eigen::MatrixXd m_w;        ///< W_ij, computed when first met in a step
+  Eigen::MatrixXi m_w_step;   ///< the step m_w(i, j) was computed for
+  Eigen::MatrixXd m_w_active; ///< W on the active set
+  Eigen::VectorXd m_rhs;      ///< -g~ on the active set
+  Eigen::VectorXd m_lambda_active;
+  Eigen::FullPivLU<Eigen::MatrixXd> m_lu;
   ContactState m_predicted_state;
   ContactState m_state; ///< at u_n
   Eigen::VectorXd m_lambda;

@@ -9,6 +9,7 @@
 // A ContactLaw evaluates them for a given displacement and velocity of the
 // whole system; the integrator never sees the geometry behind them.
 
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,15 @@ public:
                         ContactState& state) const = 0;
   /// Friction coefficient (for the friction-law monitor); 0 for frictionless laws.
   virtual double friction_coefficient() const = 0;
+  /// Every dof whose displacement or velocity evaluate() may read, over all
+  /// calls, for a system of n_dofs dofs: a caller may leave the other entries
+  /// of x and v stale (the reference integrator gathers only these). The
+  /// default is all of them.
+  virtual std::vector<int> dofs_read(int n_dofs) const {
+    std::vector<int> all(n_dofs);
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
 };
 
 } // namespace rsi

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace rsi {
 
@@ -69,7 +70,9 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
   s.max_friction_residual = std::max(s.max_friction_residual, r.max_friction_residual);
   s.sliding_reversals += r.sliding_reversals;
   s.max_active = std::max(s.max_active, r.n_active);
-  if (s.first_contact_step < 0 && r.n_active > 0) {
+  if (needs_casing(r)) {
+    if (state.casing.size() != m_casing.n_dofs())
+      throw std::logic_error("RunMonitor: the casing displacement is needed at the first contact");
     s.first_contact_step = state.step;
     const Eigen::VectorXd all = on_all_nodes(m_casing, state.casing);
     const int n = m_casing.n_elements;

@@ -62,7 +62,9 @@ struct StepState {
   const Eigen::VectorXd& lambda;
   double external_work = 0.0;
   double contact_work = 0.0;
-  Eigen::Ref<const Eigen::VectorXd> casing; ///< casing dofs at t_{n+1}
+  /// Casing dofs at t_{n+1}; read only when RunMonitor::needs_casing() says
+  /// so, and may be empty otherwise.
+  Eigen::Ref<const Eigen::VectorXd> casing;
 };
 
 /// Throws StabilityError unless dt < 2 / omega_max or forced; fills the
@@ -80,6 +82,11 @@ public:
   /// costs a product with M). Returns false when the run must stop.
   bool after_step(const StepReport& report, const StepState& state,
                   const std::function<double()>& energy);
+  /// Whether after_step() will read StepState::casing for this report (the
+  /// first step with a contact), so a solver need not gather it otherwise.
+  bool needs_casing(const StepReport& report) const {
+    return m_result.summary.first_contact_step < 0 && report.n_active > 0;
+  }
   /// Closes the summary.
   void finish(double integration_seconds, double wall_seconds);
   /// History rows produced so far (kept or streamed).

@@ -1,6 +1,9 @@
 #include "tip_casing_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "ring_element.hpp"
 
@@ -19,6 +22,20 @@ TipCasingContact::TipCasingContact(const BladedDisk& bladed_disk, const Casing& 
     m_tip_angle0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
   for (int first : casing.node_first_dof)
     m_casing_node_dof.push_back(first < 0 ? -1 : bladed_disk.n_dofs() + first);
+}
+
+std::vector<int> TipCasingContact::dofs_read(int n_dofs) const {
+  std::vector<int> dofs(m_tip_radial);
+  dofs.insert(dofs.end(), m_tip_tangential.begin(), m_tip_tangential.end());
+  for (int first : m_casing_node_dof)
+    if (first >= 0)
+      for (int d = 0; d < 4; ++d) // u, u_s, v, v_s
+        dofs.push_back(first + d);
+  for (int dof : dofs)
+    if (dof < 0 || dof >= n_dofs)
+      throw std::invalid_argument("TipCasingContact: dof " + std::to_string(dof) +
+                                  " outside a system of " + std::to_string(n_dofs) + " dofs");
+  return dofs;
 }
 
 void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
@@ -44,23 +61,24 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
       xi = 1.0;
     }
     const Eigen::Vector4d n = hermite_values(xi, arc);
-    SparseRow& normal = s.gradient[k];
-    SparseRow& direction = s.direction[k];
-    normal.assign(1, {iu, -1.0});
-    direction.assign(1, {iv, -1.0}); // T_k first, scaled by mu s_k below
+    // The element's unclamped nodes (a node past the last is node 0).
+    int first[2];
+    int n_nodes = 0;
+    int shape_offset[2];
+    for (int node = 0; node < 2; ++node) {
+      const int j = element + node == m_casing_elements ? 0 : element + node;
+      if (m_casing_node_dof[j] < 0) continue; // the clamped node: zero displacement
+      first[n_nodes] = m_casing_node_dof[j];
+      shape_offset[n_nodes++] = 2 * node;
+    }
     double u_casing = 0.0;
     double v_casing_rate = 0.0;
-    for (int node = 0; node < 2; ++node) {
-      const int first = m_casing_node_dof[(element + node) % m_casing_elements];
-      if (first < 0) continue; // the clamped node: zero displacement
+    for (int a = 0; a < n_nodes; ++a)
       for (int d = 0; d < 2; ++d) {
-        const double shape = n(2 * node + d);
-        normal.emplace_back(first + d, shape);
-        direction.emplace_back(first + 2 + d, shape);
-        u_casing += shape * x(first + d);
-        v_casing_rate += shape * v(first + 2 + d);
+        const double shape = n(shape_offset[a] + d);
+        u_casing += shape * x(first[a] + d);
+        v_casing_rate += shape * v(first[a] + 2 + d);
       }
-    }
     s.gap(k) = m_casing_radius + u_casing - (m_tip_radius + x(iu));
     s.sliding_velocity(k) = m_omega * (m_tip_radius + x(iu)) + v(iv) - v_casing_rate;
     const double sign =
@@ -68,10 +86,24 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
             ? (s.sliding_velocity(k) > 0.0 ? 1.0 : (s.sliding_velocity(k) < 0.0 ? -1.0 : 0.0))
             : 0.0;
     s.friction_sign(k) = sign;
-    // D_k = G_k + mu s_k T_k: scale T_k (held in `direction`), then append G_k.
-    for (auto& entry : direction)
-      entry.second *= m_mu * sign;
-    direction.insert(direction.end(), normal.begin(), normal.end());
+    // G_k = [-1 on u_k, N on the casing u, u_s]; D_k = mu s_k T_k followed
+    // by G_k, T_k = [-1 on v_k, N on the casing v, v_s]. Written in place:
+    // the rows keep their storage from call to call.
+    const double scale = m_mu * sign;
+    const int length = 1 + 2 * n_nodes;
+    SparseRow& normal = s.gradient[k];
+    SparseRow& direction = s.direction[k];
+    normal.resize(length);
+    direction.resize(2 * length);
+    normal[0] = {iu, -1.0};
+    direction[0] = {iv, -1.0 * scale};
+    for (int a = 0; a < n_nodes; ++a)
+      for (int d = 0; d < 2; ++d) {
+        const double shape = n(shape_offset[a] + d);
+        normal[1 + 2 * a + d] = {first[a] + d, shape};
+        direction[1 + 2 * a + d] = {first[a] + 2 + d, shape * scale};
+      }
+    std::copy(normal.begin(), normal.end(), direction.begin() + length);
   }
 }
 

@@ -34,6 +34,9 @@ public:
                 const Eigen::Ref<const Eigen::VectorXd>& v, double t,
                 ContactState& s) const override;
   double friction_coefficient() const override { return m_mu; }
+  /// The tip u and v of every blade and the u, u_s, v, v_s of every casing
+  /// node that is not clamped (a tip may meet any casing element).
+  std::vector<int> dofs_read(int n_dofs) const override;
 
 private:
   std::vector<int> m_tip_radial;
