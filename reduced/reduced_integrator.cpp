@@ -7,6 +7,7 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
     , m_kc(casing.stiffness)
+    , m_kc_rows(m_kc)
     , m_mc(casing.mass)
     , m_dt(dt)
     , m_mu(contact.friction_coefficient())
@@ -169,7 +170,7 @@ void ReducedIntegrator::predict_casing() {
   // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)).
   const int n = static_cast<int>(m_c.size());
   const double dt2 = m_dt * m_dt;
-  m_kc_c.noalias() = m_kc * m_c;
+  m_kc_rows.multiply(m_c, m_kc_c);
   for (int i = 0; i < n; ++i)
     m_casing_work(m_mc_order[i]) = m_force_zero ? -m_kc_c(i) : m_force(i) - m_kc_c(i);
   m_mc_factor.matrixL().solveInPlace(m_casing_work);

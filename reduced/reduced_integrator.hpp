@@ -33,6 +33,7 @@
 
 #include "history.hpp"
 #include "reduced_contact.hpp"
+#include "sparse_rows.hpp"
 
 namespace rsi {
 
@@ -88,6 +89,7 @@ private:
   Eigen::MatrixXd m_mq_inverse;
   Eigen::MatrixXd m_aq; ///< M^-1 K^
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_kc;
+  SparseRows m_kc_rows; ///< K_c for the per-step product (the full run's row kernels)
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_mc;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor;
   std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
