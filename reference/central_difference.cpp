@@ -31,7 +31,6 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
     , m_k(m_mass_factor.permuted(stiffness))
     , m_m(m_mass_factor.permuted(mass))
     , m_k_rows(m_k)
-    , m_residual_solve(m_mass_factor, m_k)
     , m_law_dofs(law.dofs_read(static_cast<int>(mass.rows())))
     , m_inverse_columns(mass.rows()) {
   for (int dof : m_law_dofs) {
@@ -101,9 +100,7 @@ double CentralDifference::flops_per_step() const {
 
 double CentralDifference::energy() const {
   const Eigen::VectorXd v = (m_u - m_u_prev) / m_dt;
-  Eigen::VectorXd ku(m_u.size()); // K' u_n
-  m_k_rows.multiply(m_u, ku);
-  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(ku);
+  return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_ku);
 }
 
 void CentralDifference::set_force(const Eigen::Ref<const Eigen::VectorXd>& f) {
@@ -122,6 +119,7 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   m_u = Eigen::VectorXd::Zero(n);
   m_u_prev = 0.5 * m_dt * m_dt * m_force;
   apply_inverse_mass(m_u_prev);
+  m_ku = Eigen::VectorXd::Zero(n);
   m_x = Eigen::VectorXd::Zero(n);
   m_x_next = Eigen::VectorXd::Zero(n);
   m_velocity = Eigen::VectorXd::Zero(n);
@@ -205,8 +203,12 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
 
 StepReport CentralDifference::step() {
   const double dt2 = m_dt * m_dt;
-  const Eigen::Ref<const Eigen::VectorXd> acceleration = m_residual_solve.apply(m_force, m_u);
-  m_predicted = 2.0 * m_u - m_u_prev + dt2 * acceleration; // M'^-1 (F' - K' u'_n) above
+  if (m_forced)
+    m_predicted = m_force - m_ku;
+  else
+    m_predicted = -m_ku;
+  apply_inverse_mass(m_predicted);
+  m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
   const double t_next = (m_n + 1) * m_dt;
   to_physical(m_predicted, m_x_next, m_velocity);
   m_law.evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
@@ -226,6 +228,7 @@ StepReport CentralDifference::step() {
 
   m_u_prev.swap(m_u);
   m_u.swap(m_predicted);
+  m_k_rows.multiply(m_u, m_ku);
   ++m_n;
 
   // Monitors at the corrected state (SPEC V5).

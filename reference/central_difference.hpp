@@ -21,16 +21,15 @@
 // CHOLMOD's AMD order and factorization, pivots checked, applied by its own
 // triangular solves). The state is kept in the permuted coordinates
 // u' = P u, with K' = P K P^T and M' = P M P^T, so a step applies the factor
-// with no permutation (permuting a vector in place took 15 % of a step); the
-// predictor's M'^-1 (F' - K'u') is one pass over the rows of K' and L
-// (reference/residual_solve). The contact law sees physical vectors, but
-// only the dofs it reads (ContactLaw::dofs_read: 200 of 838 on the default
-// case) are gathered and differentiated per evaluation; the whole physical
-// u_n is gathered only when displacement() is asked for. The columns
-// M^-1 e_i met by contact rows are computed once and cached, each as the
-// contiguous block of the permuted order where it is nonzero. The energy
-// costs products with M and K, so it is computed when asked (the works are
-// summed at every step).
+// with no permutation (permuting a vector in place took 15 % of a step), and
+// K'u' is summed by reference/sparse_rows. The contact law sees physical
+// vectors, but only the dofs it reads (ContactLaw::dofs_read: 200 of 838 on
+// the default case) are gathered and differentiated per evaluation; the
+// whole physical u_n is gathered only when displacement() is asked for. The
+// columns M^-1 e_i met by contact rows are computed once and cached, each as
+// the contiguous block of the permuted order where it is nonzero. The energy
+// costs a product with M, so it is computed when asked (the works are summed
+// at every step).
 
 #include <stdexcept>
 #include <vector>
@@ -42,7 +41,6 @@
 #include "contact_law.hpp"
 #include "history.hpp"
 #include "mass_factor.hpp"
-#include "residual_solve.hpp"
 #include "sparse_rows.hpp"
 
 namespace rsi {
@@ -117,8 +115,7 @@ private:
   const Eigen::VectorXi& m_position; ///< u'(m_position(i)) = u(i)
   RowMajorMatrix m_k;                ///< K'
   RowMajorMatrix m_m;                ///< M'
-  SparseRows m_k_rows;               ///< K', stored for its product (energy)
-  ResidualSolve m_residual_solve;    ///< M'^-1 (F' - K' u')
+  SparseRows m_k_rows;               ///< K', stored for its product
   std::vector<int> m_law_dofs;       ///< the physical dofs the law reads
   std::vector<int> m_law_positions;  ///< where they sit in u'
   /// The columns met so far, by physical dof: M is block diagonal (bladed
@@ -130,8 +127,9 @@ private:
   // Permuted coordinates.
   Eigen::VectorXd m_u;
   Eigen::VectorXd m_u_prev;
+  Eigen::VectorXd m_ku; ///< K' u'_n
   // Work storage, kept to avoid allocations in the step loop.
-  Eigen::VectorXd m_force; ///< F' = P F (zeros when unforced)
+  Eigen::VectorXd m_force; ///< F' = P F
   bool m_forced = false;   ///< F != 0
   Eigen::VectorXd m_predicted;
   Eigen::VectorXd m_correction;

@@ -112,9 +112,8 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   const std::vector<int> component_of_column = components(f);
   const std::vector<int> new_order = sorted_by(
       n, [&](int j) { return std::make_pair(component_of_column[j], level_of_column[j]); });
-  std::vector<int>& level = m_level; // of the column now at position i
-  level.resize(n);
-  std::vector<int> to(n); // AMD column j -> position to[j]
+  std::vector<int> level(n); // level[i]: of the column now at position i
+  std::vector<int> to(n);    // AMD column j -> position to[j]
   m_block_start.assign(1, 0);
   for (int k = 0; k < n; ++k) {
     to[new_order[k]] = k;
@@ -164,16 +163,9 @@ void MassFactor::solve_in_place(Eigen::Ref<Eigen::VectorXd> r) const {
   if (r.size() != n_dofs())
     throw std::invalid_argument("MassFactor: the vector must have one entry per dof");
   double* x = r.data();
+  const double* inverse_d = m_inverse_d.data();
   // L y = r: y_i = r_i - sum_{j<i} l_ij y_j, each row after those it reads.
   m_forward.for_each_row(x, [x](int i, double sum) { x[i] -= sum; });
-  solve_upper_in_place(r);
-}
-
-void MassFactor::solve_upper_in_place(Eigen::Ref<Eigen::VectorXd> y) const {
-  if (y.size() != n_dofs())
-    throw std::invalid_argument("MassFactor: the vector must have one entry per dof");
-  double* x = y.data();
-  const double* inverse_d = m_inverse_d.data();
   // L^T x = D^-1 y: x_j = y_j / D_jj - sum_{i>j} l_ij x_i, from the top level down.
   m_backward.for_each_row(x,
                           [x, inverse_d](int j, double sum) { x[j] = x[j] * inverse_d[j] - sum; });

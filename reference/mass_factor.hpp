@@ -14,10 +14,11 @@
 //    other is one above the highest column its row of L reads. That keeps
 //    L lower triangular (l_ij != 0, i > j puts i above j) with the same
 //    entries, and rows of one level do not depend on each other.
-// The solves take the rows level by level across the blocks, so the
-// processor can overlap the rows of a level: the longest chain of rows
-// that wait on each other is 78 levels on the default case, against 838
-// rows.
+// The solves take the rows level by level across the blocks: the rows of a
+// level do not read each other, so two of them can be summed at once
+// (reference/sparse_rows) and the processor can overlap them, instead of
+// following the chain of AMD's order (78 levels on the default case,
+// against 838 rows).
 //
 // The integrator keeps its state in these permuted coordinates u' = P u,
 // so a step applies L^-1, D^-1 and L^-T with no permutation. Both
@@ -57,12 +58,6 @@ public:
   Eigen::SparseMatrix<double> permuted(const Eigen::SparseMatrix<double>& a) const;
   /// r <- (P M P^T)^-1 r = L^-T D^-1 L^-1 r.
   void solve_in_place(Eigen::Ref<Eigen::VectorXd> r) const;
-  /// y <- L^-T D^-1 y: the second half of solve_in_place, for a caller that
-  /// did the forward solve L y = r itself (reference/residual_solve).
-  void solve_upper_in_place(Eigen::Ref<Eigen::VectorXd> y) const;
-  /// The level of each position: rows of L (and of L^T) of one level do not
-  /// read each other, and a row of L reads only lower levels.
-  const std::vector<int>& levels() const { return m_level; }
   /// Entries of L below its unit diagonal: the solve does 4 flops per entry, plus n for D.
   double nonzeros_l() const { return static_cast<double>(m_l_rows.nonZeros()); }
   /// The contiguous range [first, first + size) of positions of the
@@ -82,7 +77,6 @@ private:
   SparseRows m_forward;           ///< rows of L, level by level upward
   SparseRows m_backward;          ///< rows of L^T, level by level downward
   Eigen::VectorXd m_inverse_d;    ///< 1 / D_jj
-  std::vector<int> m_level;       ///< the level of each position
   Eigen::VectorXi m_block_of;     ///< the block of each position
   std::vector<int> m_block_start; ///< first position of each block, then n
 };

@@ -2,7 +2,7 @@
 // The rows of a sparse matrix, stored for the row sums a_i . x that a
 // reference step is made of: K'u (838 rows, 9.4 nonzeros a row on the
 // default case) and the triangular solves with the mass factor (about 4 a
-// row; reference/mass_factor, reference/residual_solve).
+// row; reference/mass_factor).
 //
 // Why not Eigen's `y.noalias() = A * x` (or compressed rows summed by a
 // loop): with rows this short, the work per row (loading its bounds,
