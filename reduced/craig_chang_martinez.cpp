@@ -96,14 +96,14 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   // so q_B is u_B); interior rows A_I from R_B^T A_I^T = R_I^T, refined to the
   // last bit with R known to twice working precision: with psi = 0 they are
   // then the constraint modes rounded, as CB's (SPEC V4).
-  const auto transposed_rows = [&](const Eigen::MatrixXd& a) {
-    return a.size() > 0 ? Eigen::MatrixXd(take_rows(a, p.interior).transpose()) : a;
+  // (Rows of R or of its low part, transposed; an empty low part stays empty.)
+  const auto transposed_rows = [](const Eigen::MatrixXd& a, const std::vector<int>& rows) {
+    return a.size() > 0 ? Eigen::MatrixXd(take_rows(a, rows).transpose()) : a;
   };
-  const Eigen::MatrixXd r_b_low =
-      r.low.size() > 0 ? Eigen::MatrixXd(take_rows(r.low, p.boundary).transpose()) : r.low;
   const Eigen::MatrixXd attachment_interior =
       accurate_solve(
-          r_b.transpose().sparseView(), r_b_low, {transposed_rows(r.value), transposed_rows(r.low)},
+          r_b.transpose().sparseView(), transposed_rows(r.low, p.boundary),
+          {transposed_rows(r.value, p.interior), transposed_rows(r.low, p.interior)},
           [&](const Eigen::MatrixXd& rhs) { return Eigen::MatrixXd(r_b_factor.solve(rhs)); },
           "Craig-Chang-Martinez: the attachment modes R(:, B) R_B^-1")
           .value.transpose();

@@ -138,6 +138,17 @@ inline double second_lane(Lanes a) {
 }
 #endif
 
+/// The k-th product value[k] x[index[k]] of one row (T = double), or the
+/// k-th products of two rows whose entries are interleaved (T = Lanes).
+template <class T>
+__attribute__((always_inline)) inline T entry_product(const double* value, const int* index,
+                                                      const double* x, int k) {
+  if constexpr (std::is_same_v<T, double>)
+    return value[k] * x[index[k]];
+  else
+    return lane_products(value + 2 * k, index + 2 * k, x);
+}
+
 /// The sum of the Length products value[k] x[index[k]] (one row, T =
 /// double, stride 1) or of two rows whose entries are interleaved (T =
 /// Lanes, stride 2: the first row's k-th entry at 2k, the second's at
@@ -146,13 +157,7 @@ inline double second_lane(Lanes a) {
 template <int Length, class T>
 __attribute__((always_inline)) inline T unrolled_dot(const double* value, const int* index,
                                                      const double* x) {
-  constexpr int stride = std::is_same_v<T, double> ? 1 : 2;
-  auto product = [&](int k) -> T {
-    if constexpr (stride == 1)
-      return value[k] * x[index[k]];
-    else
-      return lane_products(value + 2 * k, index + 2 * k, x);
-  };
+  auto product = [&](int k) { return entry_product<T>(value, index, x, k); };
   constexpr int sums = Length < 4 ? Length : 4;
   T s[sums];
 #pragma GCC unroll 4
@@ -176,13 +181,7 @@ __attribute__((always_inline)) inline T unrolled_dot(const double* value, const 
 template <class T>
 __attribute__((always_inline)) inline T looped_dot(const double* value, const int* index,
                                                    const double* x, int length) {
-  constexpr int stride = std::is_same_v<T, double> ? 1 : 2;
-  auto product = [&](int k) -> T {
-    if constexpr (stride == 1)
-      return value[k] * x[index[k]];
-    else
-      return lane_products(value + 2 * k, index + 2 * k, x);
-  };
+  auto product = [&](int k) { return entry_product<T>(value, index, x, k); };
   T s0 = product(0), s1 = product(1), s2 = product(2), s3 = product(3);
   int k = 4;
   for (; k + 3 < length; k += 4) {
