@@ -3,11 +3,13 @@
 // then writes its outputs whole; input errors surface as CaseError or
 // UsageError (exit status 2), numerical failures as ModalError (exit 3).
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "case_file.hpp"
+#include "component_case.hpp"
 #include "modal_analysis.hpp"
 
 namespace rsi {
@@ -22,14 +24,16 @@ public:
 
 struct ModesOptions {
   std::string case_path;
-  std::string part = "bladed-disk";
+  std::string part;  ///< empty: the bladed disk, or the component of a component case
   int count = 50;
   std::string out = "out/modes";
+  ComponentLoadOptions load;
 };
 
 struct ExportOptions {
   std::string case_path;
   std::string out = "out/export";
+  ComponentLoadOptions load;
 };
 
 struct CalibrateOptions {
@@ -51,6 +55,7 @@ struct ReduceOptions {
   std::string method;
   int modes = 0;
   std::string out = "out/reduce";
+  ComponentLoadOptions load;
 };
 
 struct CampaignOptions {
@@ -66,7 +71,7 @@ struct CampaignOptions {
 /// unless 1 <= count <= the part's dofs.
 struct ModesTable {
   Modes modes;
-  std::vector<int> diameters;
+  std::vector<std::optional<int>> diameters; ///< empty where a part has no cyclic structure
   std::string csv;
   int n_dofs = 0;
 };

@@ -1,4 +1,5 @@
-// rsi export: K, M (Matrix Market) and the dof map of both parts.
+// rsi export: K, M (Matrix Market), the dof map and the node coordinates of
+// every component of a case, in the layout a matrix_market source reads back.
 
 #include <cstdio>
 #include <sstream>
@@ -6,7 +7,9 @@
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "commands.hpp"
+#include "component_input.hpp"
 #include "output_files.hpp"
+#include "paper_components.hpp"
 
 namespace rsi {
 namespace {
@@ -20,26 +23,38 @@ std::string dofs_csv(const DofMap& dofs) {
   return csv.str();
 }
 
-void write_part(const std::string& dir, const Eigen::SparseMatrix<double>& stiffness,
-                const Eigen::SparseMatrix<double>& mass, const DofMap& dofs) {
-  write_symmetric_matrix_market(dir + "/K.mtx", stiffness);
-  write_symmetric_matrix_market(dir + "/M.mtx", mass);
-  write_text_file(dir + "/dofs.csv", dofs_csv(dofs));
-  std::printf("wrote %s/{K.mtx,M.mtx,dofs.csv}: %zu dofs\n", dir.c_str(), dofs.size());
+std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
+  std::ostringstream csv;
+  csv.precision(17);
+  csv << "node,x,y,z\n";
+  for (const ComponentNode& node : nodes)
+    csv << node.id << "," << node.x(0) << "," << node.x(1) << "," << node.x(2) << "\n";
+  return csv.str();
+}
+
+void write_component(const std::string& dir, const Component& c) {
+  write_symmetric_matrix_market(dir + "/K.mtx", c.stiffness);
+  write_symmetric_matrix_market(dir + "/M.mtx", c.mass);
+  write_text_file(dir + "/dofs.csv", dofs_csv(c.dofs));
+  write_text_file(dir + "/nodes.csv", nodes_csv(c.nodes));
+  std::printf("wrote %s/{K.mtx,M.mtx,dofs.csv,nodes.csv}: %d dofs, %zu nodes, %zu boundary dofs\n",
+              dir.c_str(), c.n_dofs(), c.nodes.size(), c.boundary.size());
 }
 
 } // namespace
 
 int run_export(const ExportOptions& options, OutputDirectories& directories) {
-  const Case c = load_case(options.case_path);
-  const BladedDisk bd = assemble_bladed_disk(c);
-  const Casing casing = assemble_casing(c);
-  // Both directories before any file: an unwritable one leaves no part written.
+  std::vector<Component> components;
+  ComponentInput first = load_component_input(options.case_path, "", options.load);
+  const bool paper = !first.component_case.has_value();
+  components.push_back(std::move(first.component));
+  if (paper) components.push_back(load_component_input(options.case_path, "casing", options.load).component);
+  // Every directory before any file: an unwritable one leaves no part written.
   directories.make(options.out, "--out");
-  directories.make(options.out + "/bladed-disk", "--out");
-  directories.make(options.out + "/casing", "--out");
-  write_part(options.out + "/bladed-disk", bd.stiffness, bd.mass, bd.dofs);
-  write_part(options.out + "/casing", casing.stiffness, casing.mass, casing.dofs);
+  for (const Component& c : components)
+    directories.make(options.out + "/" + c.name, "--out");
+  for (const Component& c : components)
+    write_component(options.out + "/" + c.name, c);
   return 0;
 }
 

@@ -18,6 +18,7 @@
 #include "case_file.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
+#include "component.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
 #include "reduced_integrator.hpp"
@@ -110,6 +111,20 @@ std::string required_allowed(const CLI::App& app, const std::string& message) {
   return {};
 }
 
+/// --source and --ccx-cache of the commands that take a component case.
+void add_component_options(CLI::App& command, rsi::ComponentLoadOptions& load) {
+  command
+      .add_option("--source", load.source_override,
+                  "component case only: the deck or Matrix Market folder to read instead of "
+                  "the case's component.source")
+      ->check(nonempty_path());
+  command
+      .add_option("--ccx-cache", load.ccx_cache,
+                  "folder of cached ccx runs (matrices of CalculiX decks)")
+      ->capture_default_str()
+      ->check(nonempty_path());
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -121,29 +136,31 @@ int main(int argc, char** argv) {
       "638 for the default case; guyan: 0)";
 
   rsi::ModesOptions modes;
-  CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one part -> DIR/modes.csv");
+  CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one component -> DIR/modes.csv");
   modes_cmd->add_option("case", modes.case_path, "case file (JSON)")
       ->required()
       ->check(case_file());
-  modes_cmd->add_option("--part", modes.part, "bladed-disk or casing")
-      ->capture_default_str()
-      ->check(one_of({"bladed-disk", "casing"}));
+  modes_cmd->add_option("--part", modes.part,
+                        "bladed-disk (default) or casing for the paper's case; a component "
+                        "case has one part, its name");
   modes_cmd->add_option("--count", modes.count, "number of modes, 1..number of dofs")
       ->capture_default_str()
       ->check(integer_in(1, 1000000000, "an integer in [1, the part's number of dofs]"));
   modes_cmd->add_option("--out", modes.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
+  add_component_options(*modes_cmd, modes.load);
 
   rsi::ExportOptions export_options;
   CLI::App* export_cmd = app.add_subcommand(
-      "export", "K.mtx, M.mtx, dofs.csv of both parts -> DIR/{bladed-disk,casing}/");
+      "export", "K.mtx, M.mtx, dofs.csv, nodes.csv of each component -> DIR/<component>/");
   export_cmd->add_option("case", export_options.case_path, "case file (JSON)")
       ->required()
       ->check(case_file());
   export_cmd->add_option("--out", export_options.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
+  add_component_options(*export_cmd, export_options.load);
 
   rsi::CalibrateOptions calibrate;
   CLI::App* calibrate_cmd = app.add_subcommand(
@@ -178,7 +195,7 @@ int main(int argc, char** argv) {
 
   rsi::ReduceOptions reduce;
   CLI::App* reduce_cmd = app.add_subcommand(
-      "reduce", "Reduction basis of the bladed disk -> DIR/{K.mtx,M.mtx,T.mtx,basis.json}");
+      "reduce", "Reduction basis of a component -> DIR/{K.mtx,M.mtx,T.mtx,basis.json}");
   reduce_cmd->add_option("case", reduce.case_path, "case file (JSON)")
       ->required()
       ->check(case_file());
@@ -191,6 +208,7 @@ int main(int argc, char** argv) {
   reduce_cmd->add_option("--out", reduce.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
+  add_component_options(*reduce_cmd, reduce.load);
 
   rsi::CampaignOptions campaign;
   CLI::App* campaign_cmd = app.add_subcommand(
@@ -248,6 +266,8 @@ int main(int argc, char** argv) {
       if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
       if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
     } catch (const rsi::CaseError& e) {
+      return failure("error", e, 2);
+    } catch (const rsi::ImportError& e) {
       return failure("error", e, 2);
     } catch (const rsi::UsageError& e) {
       return failure("error", e, 2);

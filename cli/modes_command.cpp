@@ -1,82 +1,74 @@
-// rsi modes: lowest modes of one part, labelled by nodal diameter.
+// rsi modes: lowest modes of one component, labelled by nodal diameter
+// where the component has a cyclic structure.
 
+#include <chrono>
 #include <cstdio>
-#include <functional>
 #include <sstream>
 
-#include "bladed_disk.hpp"
-#include "casing.hpp"
 #include "commands.hpp"
+#include "component_input.hpp"
 #include "modal_analysis.hpp"
-#include "nodal_diameter.hpp"
 #include "output_files.hpp"
 
 namespace rsi {
 namespace {
 
-struct Part {
-  Eigen::SparseMatrix<double> stiffness;
-  Eigen::SparseMatrix<double> mass;
-  /// Nodal diameter of a mode shape of this part.
-  std::function<int(const Eigen::VectorXd&)> label;
-};
-
-Part load_part(const Case& c, const std::string& name) {
-  if (name == "bladed-disk") {
-    BladedDisk bd = assemble_bladed_disk(c);
-    const int n = bd.n_sectors;
-    const int block = bd.dofs_per_sector;
-    return {bd.stiffness, bd.mass,
-            [n, block](const Eigen::VectorXd& x) { return nodal_diameter(x, n, block); }};
-  }
-  if (name == "casing") {
-    Casing casing = assemble_casing(c);
-    return {casing.stiffness, casing.mass, [casing](const Eigen::VectorXd& x) {
-              return nodal_diameter(on_all_nodes(casing, x), casing.n_elements, 4);
-            }};
-  }
-  throw UsageError("--part: must be bladed-disk or casing, got '" + name + "'");
-}
-
-} // namespace
-
-ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
-  const Part part = load_part(c, part_name);
-  const int n = static_cast<int>(part.stiffness.rows());
+ModesTable table_of(const ComponentInput& input, int count) {
+  const Component& part = input.component;
+  const int n = part.n_dofs();
   if (count < 1 || count > n)
-    throw UsageError("--count: must be in [1, " + std::to_string(n) + "] for part " + part_name +
+    throw UsageError("--count: must be in [1, " + std::to_string(n) + "] for part " + part.name +
                      " (its number of dofs), got " + std::to_string(count));
   ModesTable table{lowest_modes(part.stiffness, part.mass, count), {}, {}, n};
   std::ostringstream csv;
   csv << "index,frequency_hz,nodal_diameter\n";
   csv.precision(12);
   for (int i = 0; i < table.modes.n_modes(); ++i) {
-    table.diameters.push_back(part.label(table.modes.shapes.col(i)));
-    csv << i + 1 << "," << table.modes.frequency_hz(i) << "," << table.diameters.back() << "\n";
+    const std::optional<int> nd =
+        input.diameter ? input.diameter(table.modes.shapes.col(i)) : std::nullopt;
+    table.diameters.push_back(nd);
+    csv << i + 1 << "," << table.modes.frequency_hz(i) << ",";
+    if (nd) csv << *nd;
+    csv << "\n";
   }
   table.csv = csv.str();
   return table;
 }
 
+} // namespace
+
+ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
+  return table_of(paper_part_input(c, part_name), count);
+}
+
 int run_modes(const ModesOptions& options, OutputDirectories& directories) {
-  const Case c = load_case(options.case_path);
-  const ModesTable table = modes_table(c, options.part, options.count);
+  const auto start = std::chrono::steady_clock::now();
+  const ComponentInput input = load_component_input(options.case_path, options.part, options.load);
+  const auto loaded = std::chrono::steady_clock::now();
+  const ModesTable table = table_of(input, options.count);
+  const auto solved = std::chrono::steady_clock::now();
   const Modes& modes = table.modes;
-  const std::vector<int>& diameters = table.diameters;
   const int n = table.n_dofs;
   directories.make(options.out, "--out");
   const std::string path = options.out + "/modes.csv";
   write_text_file(path, table.csv);
 
-  std::printf("%s: %s, %d dofs\n", c.source.c_str(), options.part.c_str(), n);
-  std::printf(
-      "omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = %.6e s"
-      " (case step %.3e s)\n",
-      modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step(), c.time.step);
+  const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
+  std::printf("%s: %s, %d dofs (%s)\n", input.case_source.c_str(), input.component.name.c_str(),
+              n, input.component.units.c_str());
+  std::printf("omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = "
+              "%.6e s",
+              modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step());
+  if (input.case_time_step > 0.0) std::printf(" (case step %.3e s)", input.case_time_step);
+  std::printf("\nload %.2f s, %d modes %.2f s, peak memory %.0f MB\n", seconds(start, loaded),
+              modes.n_modes(), seconds(loaded, solved), peak_memory_bytes() / 1048576.0);
   std::printf("%6s %16s %6s\n", "index", "frequency_hz", "ND");
   const int shown = std::min(modes.n_modes(), 30);
-  for (int i = 0; i < shown; ++i)
-    std::printf("%6d %16.6f %6d\n", i + 1, modes.frequency_hz(i), diameters[i]);
+  for (int i = 0; i < shown; ++i) {
+    std::printf("%6d %16.6f", i + 1, modes.frequency_hz(i));
+    if (table.diameters[i]) std::printf(" %6d", *table.diameters[i]);
+    std::printf("\n");
+  }
   if (shown < modes.n_modes()) std::printf("   ... %d more\n", modes.n_modes() - shown);
   std::printf("wrote %s\n", path.c_str());
   return 0;

@@ -1,11 +1,11 @@
-// rsi reduce: a reduction basis of the bladed disk -> K.mtx, M.mtx, T.mtx, basis.json.
+// rsi reduce: a reduction basis of a component -> K.mtx, M.mtx, T.mtx, basis.json.
 
 #include <cstdio>
 
 #include <nlohmann/json.hpp>
 
-#include "bladed_disk.hpp"
 #include "commands.hpp"
+#include "component_input.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
 #include "reduction.hpp"
@@ -15,32 +15,39 @@ namespace rsi {
 int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
   if (options.method != "cb" && options.method != "ccm" && options.method != "guyan")
     throw UsageError("--method: must be cb, ccm or guyan, got '" + options.method + "'");
-  const Case c = load_case(options.case_path);
-  const BladedDisk bd = assemble_bladed_disk(c);
-  const ReducedBasis basis = reduce_bladed_disk(bd, options.method, options.modes);
+  const ComponentInput input = load_component_input(options.case_path, "", options.load);
+  const Component& c = input.component;
+  if (c.boundary.empty())
+    throw UsageError(input.case_source + ": the component " + c.name +
+                     " has no boundary dofs to keep; a reduction needs them");
+  const ReducedBasis basis =
+      reduce(c.stiffness, c.mass, c.boundary, options.method, options.modes);
   const double omega_max = reduced_omega_max(basis);
   directories.make(options.out, "--out");
   write_symmetric_matrix_market(options.out + "/K.mtx", basis.stiffness.sparseView());
   write_symmetric_matrix_market(options.out + "/M.mtx", basis.mass.sparseView());
   write_general_matrix_market(options.out + "/T.mtx", basis.transformation.sparseView());
   nlohmann::ordered_json j;
+  j["component"] = c.name;
   j["method"] = basis.method;
   j["modes"] = basis.n_modes;
-  j["full_dofs"] = bd.n_dofs();
-  j["boundary_dofs"] = static_cast<int>(bd.boundary.size());
+  j["full_dofs"] = c.n_dofs();
+  j["boundary_dofs"] = static_cast<int>(c.boundary.size());
   j["reduced_dofs"] = basis.n_reduced();
   j["boundary_position"] = basis.boundary_position;
   j["omega_max"] = omega_max;
   j["critical_dt"] = 2.0 / omega_max;
   if (basis.method == "ccm") j["cond_RB"] = basis.cond_rb;
   j["build_seconds"] = basis.build_seconds;
+  j["peak_memory_bytes"] = peak_memory_bytes();
   write_text_file(options.out + "/basis.json", j.dump(2) + "\n");
-  std::printf("%s: %s with %d modes: %d -> %d dofs; omega_max %.6e rad/s, critical step %.6e s",
-              c.source.c_str(), basis.method.c_str(), basis.n_modes, bd.n_dofs(), basis.n_reduced(),
-              omega_max, 2.0 / omega_max);
+  std::printf("%s: %s, %s with %d modes: %d -> %d dofs; omega_max %.6e rad/s, critical step "
+              "%.6e s",
+              input.case_source.c_str(), c.name.c_str(), basis.method.c_str(), basis.n_modes,
+              c.n_dofs(), basis.n_reduced(), omega_max, 2.0 / omega_max);
   if (basis.method == "ccm") std::printf(", cond(R_B) %.3e", basis.cond_rb);
-  std::printf("; built in %.3f s\nwrote %s/{K.mtx,M.mtx,T.mtx,basis.json}\n", basis.build_seconds,
-              options.out.c_str());
+  std::printf("; built in %.3f s, peak memory %.0f MB\nwrote %s/{K.mtx,M.mtx,T.mtx,basis.json}\n",
+              basis.build_seconds, peak_memory_bytes() / 1048576.0, options.out.c_str());
   return 0;
 }
 

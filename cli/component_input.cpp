@@ -1,0 +1,78 @@
+#include "component_input.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <sys/resource.h>
+
+#include "bladed_disk.hpp"
+#include "casing.hpp"
+#include "commands.hpp"
+#include "nodal_diameter.hpp"
+#include "paper_components.hpp"
+
+namespace rsi {
+
+ComponentInput load_component_input(const std::string& case_path, const std::string& part,
+                                    const ComponentLoadOptions& load) {
+  std::ifstream in(case_path);
+  if (!in) throw CaseError(case_path + ": cannot open the case file (missing or unreadable)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::exception& e) {
+    throw CaseError(case_path + ": malformed JSON: " + e.what());
+  }
+  ComponentInput input;
+  input.case_source = case_path;
+  if (is_component_case(document)) {
+    input.component_case = parse_component_case(document, case_path);
+    if (!part.empty() && part != input.component_case->name)
+      throw UsageError("--part: the case " + case_path + " has one component, '" +
+                       input.component_case->name + "', got '" + part + "'");
+    input.component = load_component(*input.component_case, load);
+    return input;
+  }
+  if (!load.source_override.empty())
+    throw UsageError("--source: only for a component case (a CalculiX deck or Matrix Market "
+                     "folder); " + case_path + " is the paper's case");
+  ComponentInput input_of_part = paper_part_input(parse_case(document, case_path), part);
+  input_of_part.case_source = case_path;
+  return input_of_part;
+}
+
+ComponentInput paper_part_input(const Case& c, const std::string& part) {
+  ComponentInput input;
+  input.case_source = c.source;
+  input.case_time_step = c.time.step;
+  if (part.empty() || part == "bladed-disk") {
+    const BladedDisk bd = assemble_bladed_disk(c);
+    input.component = bladed_disk_component(bd);
+    const int n = bd.n_sectors;
+    const int block = bd.dofs_per_sector;
+    input.diameter = [n, block](const Eigen::VectorXd& x) -> std::optional<int> {
+      return nodal_diameter(x, n, block);
+    };
+  } else if (part == "casing") {
+    const Casing casing = assemble_casing(c);
+    input.component = casing_component(casing);
+    input.diameter = [casing](const Eigen::VectorXd& x) -> std::optional<int> {
+      return nodal_diameter(on_all_nodes(casing, x), casing.n_elements, 4);
+    };
+  } else {
+    throw UsageError("--part: must be bladed-disk or casing for the paper's case, got '" + part +
+                     "'");
+  }
+  return input;
+}
+
+long long peak_memory_bytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<long long>(usage.ru_maxrss) * 1024;
+}
+
+} // namespace rsi

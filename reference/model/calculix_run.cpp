@@ -1,0 +1,183 @@
+#include "calculix_run.hpp"
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "component.hpp"
+#include "coordinate_entries.hpp"
+
+namespace rsi {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t h = 14695981039346656037ull) {
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+std::string hex(std::uint64_t h) {
+  std::ostringstream s;
+  s << std::hex << h;
+  return s.str();
+}
+
+/// Runs `ccx -i job` in `dir` with its output in dir/ccx.log; the exit status.
+int run_ccx(const std::string& ccx, const fs::path& dir) {
+  const std::string log = (dir / "ccx.log").string();
+  const pid_t pid = fork();
+  if (pid < 0) throw ImportError("ccx: cannot start a process (fork failed)");
+  if (pid == 0) {
+    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd < 0 || chdir(dir.c_str()) != 0) _exit(127);
+    dup2(fd, 1);
+    dup2(fd, 2);
+    execl(ccx.c_str(), ccx.c_str(), "-i", "job", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) throw ImportError("ccx: waitpid failed");
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+/// The lines of ccx's log that say what went wrong.
+std::string error_lines(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line;
+  std::string out;
+  int kept = 0;
+  while (std::getline(in, line) && kept < 8)
+    if (line.find("ERROR") != std::string::npos) {
+      out += "\n  " + line;
+      ++kept;
+    }
+  return out.empty() ? " (no *ERROR line in " + log.string() + ")" : out;
+}
+
+/// The cache entry for the model of `deck` followed by `step`: ccx run there
+/// unless it already exists. Returns the entry folder.
+fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std::string& tag,
+                    const std::vector<std::string>& outputs, const std::string& cache_dir) {
+  const std::string text = deck.model_text + step;
+  const fs::path entry = fs::path(cache_dir) / (fs::path(deck.path).stem().string() + "-" +
+                                                hex(fnv1a(text)) + "-" + tag);
+  if (fs::is_directory(entry)) return entry;
+  const std::string ccx = find_ccx();
+  std::error_code ec;
+  fs::create_directories(cache_dir, ec);
+  if (ec) throw ImportError("--ccx-cache: cannot create '" + cache_dir + "': " + ec.message());
+  fs::path work = entry;
+  work += ".tmp" + std::to_string(getpid());
+  fs::remove_all(work, ec);
+  fs::create_directories(work, ec);
+  if (ec) throw ImportError("--ccx-cache: cannot create '" + work.string() + "': " + ec.message());
+  {
+    std::ofstream out(work / "job.inp", std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) {
+      fs::remove_all(work, ec);
+      throw ImportError("--ccx-cache: cannot write " + (work / "job.inp").string());
+    }
+  }
+  const int status = run_ccx(ccx, work);
+  bool complete = status == 0;
+  for (const std::string& name : outputs)
+    complete = complete && fs::exists(work / name) && fs::file_size(work / name) > 0;
+  if (!complete) {
+    const std::string why = error_lines(work / "ccx.log");
+    fs::path failed = entry;
+    failed += ".failed";
+    fs::remove_all(failed, ec);
+    fs::rename(work, failed, ec);
+    throw ImportError(deck.path + ": ccx failed on the model (exit status " +
+                      std::to_string(status) + "; its files are in " + failed.string() + "):" +
+                      why);
+  }
+  fs::rename(work, entry, ec);
+  if (ec && !fs::is_directory(entry))
+    throw ImportError("--ccx-cache: cannot rename " + work.string() + ": " + ec.message());
+  fs::remove_all(work, ec);
+  return entry;
+}
+
+} // namespace
+
+std::string find_ccx() {
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "ccx";
+    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  throw ImportError("ccx (CalculiX) not found on PATH: install Debian's calculix-ccx "
+                    "(./run-tests.sh does), or write the matrices yourself and name the folder "
+                    "as a matrix_market source");
+}
+
+std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir) {
+  const std::string step = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
+  const fs::path entry =
+      cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"}, cache_dir);
+  return (entry / "job").string();
+}
+
+std::vector<double> calculix_eigenvalues(const CalculixDeck& deck, int count,
+                                         const std::string& cache_dir) {
+  if (count < 1) throw ImportError("calculix_eigenvalues: count must be >= 1");
+  const std::string step = "*STEP, PERTURBATION\n*FREQUENCY\n" + std::to_string(count) +
+                           "\n*NODE FILE\nU\n*END STEP\n";
+  const fs::path entry = cached_run(deck, step, "modes" + std::to_string(count), {"job.dat"},
+                                    cache_dir);
+  std::vector<double> values = read_calculix_eigenvalues((entry / "job.dat").string());
+  if (static_cast<int>(values.size()) < count)
+    throw ImportError((entry / "job.dat").string() + ": ccx found " +
+                      std::to_string(values.size()) + " eigenvalues, " + std::to_string(count) +
+                      " were asked");
+  values.resize(count);
+  return values;
+}
+
+std::vector<double> read_calculix_eigenvalues(const std::string& dat_path) {
+  std::ifstream in(dat_path);
+  if (!in) throw ImportError(dat_path + ": cannot open");
+  std::string line;
+  while (std::getline(in, line) && line.find("E I G E N V A L U E   O U T P U T") ==
+                                       std::string::npos) {
+  }
+  std::vector<double> values;
+  bool started = false;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    int mode = 0;
+    double eigenvalue = 0.0;
+    if (fields >> mode >> eigenvalue) {
+      if (mode != static_cast<int>(values.size()) + 1)
+        throw ImportError(dat_path + ": eigenvalue table out of order at mode " +
+                          std::to_string(mode));
+      values.push_back(eigenvalue);
+      started = true;
+    } else if (started) {
+      const bool blank = line.find_first_not_of(" \t\r") == std::string::npos;
+      if (!blank) break;
+      if (!values.empty() && blank && started) break;
+    }
+  }
+  if (values.empty()) throw ImportError(dat_path + ": no EIGENVALUE OUTPUT table");
+  return values;
+}
+
+} // namespace rsi

@@ -1,0 +1,192 @@
+#include "component_case.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "calculix_deck.hpp"
+#include "calculix_matrices.hpp"
+#include "calculix_run.hpp"
+#include "case_json.hpp"
+#include "matrix_market.hpp"
+
+namespace rsi {
+namespace {
+
+using namespace case_json;
+using nlohmann::json;
+
+std::string resolve(const std::string& path, const std::string& case_path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute()) return path;
+  return (std::filesystem::path(case_path).parent_path() / p).lexically_normal().string();
+}
+
+std::string string_value(ObjectReader& r, const json& object, const std::string& key) {
+  r.claim(key);
+  if (!object.contains(key)) r.fail(r.full(key), "missing (required)");
+  const json& v = object.at(key);
+  if (!v.is_string() || v.get<std::string>().empty())
+    r.fail(r.full(key), "must be a non-empty string, got " + v.dump());
+  return v.get<std::string>();
+}
+
+std::vector<int> integer_list(ObjectReader& r, const json& object, const std::string& key,
+                              long low, long high) {
+  r.claim(key);
+  if (!object.contains(key)) r.fail(r.full(key), "missing (required)");
+  const json& list = object.at(key);
+  if (!list.is_array() || list.empty())
+    r.fail(r.full(key), "must be a non-empty array of integers, got " + list.dump().substr(0, 80));
+  std::vector<int> out;
+  for (const json& v : list) {
+    if (!v.is_number_integer() || v.get<long>() < low || v.get<long>() > high)
+      r.fail(r.full(key), "must hold integers in [" + std::to_string(low) + ", " +
+                              std::to_string(high) + "], got " + v.dump());
+    out.push_back(v.get<int>());
+  }
+  return out;
+}
+
+int node_id(int id) {
+  return id;
+}
+int node_id(const ComponentNode& node) {
+  return node.id;
+}
+
+} // namespace
+
+bool is_component_case(const json& document) {
+  return document.is_object() && document.contains("component");
+}
+
+ComponentCase parse_component_case(const json& document, const std::string& path) {
+  ObjectReader top(document, "", path);
+  ComponentCase c;
+  c.case_path = path;
+  top.optional_note("description");
+  const json& cj = document.contains("component") ? document.at("component") : json();
+  ObjectReader comp = top.object("component");
+  c.name = string_value(comp, cj, "name");
+  if (c.name.find_first_of("/\\") != std::string::npos || c.name == "." || c.name == "..")
+    comp.fail(comp.full("name"), "must be a plain folder name (no '/'), got '" + c.name + "'");
+
+  const json& sj = cj.contains("source") ? cj.at("source") : json();
+  ObjectReader source = comp.object("source");
+  if (!sj.is_object() || sj.size() != 1 ||
+      !(sj.contains("calculix_deck") || sj.contains("matrix_market")))
+    comp.fail(comp.full("source"), "must be {\"calculix_deck\": file} or "
+                                       "{\"matrix_market\": folder}, got " + sj.dump().substr(0, 80));
+  if (sj.contains("calculix_deck")) {
+    c.source = ComponentSource::calculix_deck;
+    c.source_path = resolve(string_value(source, sj, "calculix_deck"), path);
+  } else {
+    c.source = ComponentSource::matrix_market;
+    c.source_path = resolve(string_value(source, sj, "matrix_market"), path);
+  }
+  source.finish();
+
+  comp.claim("boundary");
+  if (cj.contains("boundary")) {
+    const json& bj = cj.at("boundary");
+    ObjectReader boundary = comp.object("boundary");
+    if (!bj.is_object() || bj.size() != 1 || !(bj.contains("nodes") || bj.contains("node_set")))
+      boundary.fail(comp.full("boundary"),
+                    "must be {\"nodes\": [ids]} or {\"node_set\": \"NAME\"} (an *NSET of the deck)");
+    if (bj.contains("nodes")) {
+      c.boundary_nodes = integer_list(boundary, bj, "nodes", 1, 2147483647L);
+    } else {
+      if (c.source != ComponentSource::calculix_deck)
+        boundary.fail(boundary.full("node_set"), "needs a calculix_deck source (an *NSET of it)");
+      c.boundary_node_set = string_value(boundary, bj, "node_set");
+      std::transform(c.boundary_node_set.begin(), c.boundary_node_set.end(),
+                     c.boundary_node_set.begin(), [](unsigned char ch) { return std::toupper(ch); });
+    }
+    boundary.finish();
+  } else if (c.source == ComponentSource::matrix_market) {
+    c.boundary_from_dofs = true;
+  } else {
+    comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
+  }
+
+  c.units = string_value(comp, cj, "units");
+  comp.claim("rotation_axis");
+  if (cj.contains("rotation_axis")) {
+    const json& axis = cj.at("rotation_axis");
+    bool ok = axis.is_array() && axis.size() == 3;
+    for (size_t k = 0; ok && k < 3; ++k) {
+      ok = axis[k].is_number() && std::isfinite(axis[k].get<double>());
+      if (ok) c.rotation_axis(static_cast<int>(k)) = axis[k].get<double>();
+    }
+    if (!ok || !(c.rotation_axis.norm() > 0.0))
+      comp.fail(comp.full("rotation_axis"),
+                "must be three finite numbers, not all zero, got " + axis.dump().substr(0, 80));
+    c.rotation_axis.normalize();
+  }
+  comp.finish();
+
+  top.claim("modal_campaign");
+  if (document.contains("modal_campaign")) {
+    const json& mj = document.at("modal_campaign");
+    ObjectReader mc = top.object("modal_campaign");
+    ModalCampaign campaign;
+    mc.claim("methods");
+    const json& methods = mj.contains("methods") ? mj.at("methods") : json();
+    if (!methods.is_array() || methods.empty())
+      mc.fail(mc.full("methods"), "must be a non-empty array of \"cb\", \"ccm\", \"macneal\"");
+    for (const json& m : methods) {
+      if (!m.is_string() || (m != "cb" && m != "ccm" && m != "macneal"))
+        mc.fail(mc.full("methods"), "must hold \"cb\", \"ccm\" or \"macneal\", got " + m.dump());
+      campaign.methods.push_back(m.get<std::string>());
+    }
+    campaign.modes = integer_list(mc, mj, "modes", 1, 100000);
+    std::sort(campaign.modes.begin(), campaign.modes.end());
+    campaign.modes.erase(std::unique(campaign.modes.begin(), campaign.modes.end()),
+                         campaign.modes.end());
+    campaign.frequencies = mc.integer("frequencies", 1, 1000);
+    mc.finish();
+    c.modal_campaign = campaign;
+  }
+  top.finish();
+  return c;
+}
+
+Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
+  const std::string source = options.source_override.empty() ? c.source_path
+                                                             : options.source_override;
+  Component component;
+  if (c.source == ComponentSource::matrix_market) {
+    if (!std::filesystem::is_directory(source))
+      throw ImportError(c.case_path + ": key 'component.source.matrix_market': '" + source +
+                        "' is not a folder");
+    component = read_matrix_market_component(
+        source, c.name, c.boundary_from_dofs ? nullptr : &c.boundary_nodes);
+  } else {
+    if (!std::filesystem::is_regular_file(source))
+      throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
+                        "' is not a file (the deck; --source overrides it)");
+    const CalculixDeck deck = read_calculix_deck(source);
+    std::vector<int> boundary = c.boundary_nodes;
+    if (!c.boundary_node_set.empty()) {
+      const auto set = deck.nsets.find(c.boundary_node_set);
+      if (set == deck.nsets.end())
+        throw ImportError(c.case_path + ": key 'component.boundary.node_set': the deck " + source +
+                          " has no *NSET named " + c.boundary_node_set);
+      boundary = set->second;
+    }
+    for (int id : boundary)
+      if (!std::binary_search(deck.nodes.begin(), deck.nodes.end(), id,
+                              [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
+        throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
+                          std::to_string(id) + " is not a node of the deck " + source);
+    component = read_calculix_component(calculix_matrices(deck, options.ccx_cache), deck,
+                                        boundary, c.name);
+  }
+  component.units = c.units;
+  component.rotation_axis = c.rotation_axis;
+  return component;
+}
+
+} // namespace rsi

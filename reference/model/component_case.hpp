@@ -1,0 +1,66 @@
+#pragma once
+// The case file of a component (SPEC §8; schema in data/README.md): which
+// model (a CalculiX deck, a Matrix Market folder in `rsi export`'s layout,
+// or the project's gmsh blade), its boundary node set, its units and
+// rotation axis, and optionally the modal convergence campaign. Relative
+// paths are read against the case file's folder.
+//
+//   {"component": {"name": "rotor37",
+//                  "source": {"calculix_deck": "../../../shared/external/rotor37/blade.inp"},
+//                  "boundary": {"nodes": [188, 190, ...]},
+//                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
+//    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
+//                       "frequencies": 20}}
+//
+// A rejected file raises CaseError naming the file and the key (exit 2).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json_fwd.hpp>
+
+#include "component.hpp"
+
+namespace rsi {
+
+enum class ComponentSource { calculix_deck, matrix_market };
+
+struct ModalCampaign {
+  std::vector<std::string> methods; ///< "cb", "ccm", "macneal"
+  std::vector<int> modes;           ///< mode counts, ascending
+  int frequencies = 20;             ///< lowest reduced frequencies compared
+};
+
+struct ComponentCase {
+  std::string case_path;
+  std::string name;
+  ComponentSource source = ComponentSource::calculix_deck;
+  std::string source_path;                 ///< resolved against the case file's folder
+  std::vector<int> boundary_nodes;         ///< explicit ids, or
+  std::string boundary_node_set;           ///< an *NSET of the deck (upper case)
+  bool boundary_from_dofs = false;         ///< matrix_market: dofs.csv's flags
+  std::string units;
+  Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
+  std::optional<ModalCampaign> modal_campaign;
+};
+
+/// True if the JSON document is a component case (has a "component" key).
+bool is_component_case(const nlohmann::json& document);
+
+ComponentCase parse_component_case(const nlohmann::json& document, const std::string& path);
+
+/// Where a component's model comes from at run time: `source_override`
+/// replaces the case's source path (the CLI's --source), `ccx_cache` is the
+/// folder of ccx's cached runs.
+struct ComponentLoadOptions {
+  std::string source_override;
+  std::string ccx_cache = "out/ccx-cache";
+};
+
+/// Builds the component: runs ccx (cached) on a deck, or reads a folder.
+/// Throws ImportError (bad files, missing ccx) or CaseError.
+Component load_component(const ComponentCase& c, const ComponentLoadOptions& options);
+
+} // namespace rsi

@@ -1,0 +1,30 @@
+#pragma once
+// A component from a folder in the layout `rsi export` writes: K.mtx and
+// M.mtx (Matrix Market coordinate real, symmetric or general), dofs.csv
+// (index,node,kind,boundary) and nodes.csv (node,x,y,z). Export then import
+// round-trips exactly: values are written with 17 significant digits and
+// read back by std::from_chars, the nearest double.
+//
+// Throws ImportError naming file and line for a bad header or size line, a
+// truncated file (fewer entries than its size line says), a non-numeric
+// line, an index beyond the size, NaN/Inf, a dof count different from the
+// matrix size, a dof whose node has no coordinates; check_component then
+// checks symmetry and the mass diagonal.
+
+#include <string>
+
+#include "component.hpp"
+
+namespace rsi {
+
+/// A Matrix Market coordinate real matrix (symmetric: one triangle given,
+/// general: both, checked symmetric) as a symmetric n x n matrix, both
+/// triangles stored.
+Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path);
+
+/// The component in `folder`; the boundary is the dofs flagged in dofs.csv
+/// unless `boundary_nodes` is given (every dof of each node).
+Component read_matrix_market_component(const std::string& folder, const std::string& name,
+                                       const std::vector<int>* boundary_nodes);
+
+} // namespace rsi
