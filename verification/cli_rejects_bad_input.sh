@@ -143,7 +143,7 @@ expect 2 "--count: must be in [1, 156]" -- "$rsi" modes "$good" --part casing --
 expect 2 "--count: must be an integer in [1, the part's number of dofs], got '0'" -- "$rsi" modes "$good" --count 0 --out "$work/out"
 expect 2 "--count: must be an integer in [1, the part's number of dofs], got 'many'" -- "$rsi" modes "$good" --count many --out "$work/out"
 expect 2 "--count: must be an integer in [1, the part's number of dofs], got '2.5'" -- "$rsi" modes "$good" --count 2.5 --out "$work/out"
-expect 2 "--part: must be bladed-disk or casing, got 'rotor'" -- "$rsi" modes "$good" --part rotor --out "$work/out"
+expect 2 "--part: must be bladed-disk or casing for the paper's case, got 'rotor'" -- "$rsi" modes "$good" --part rotor --out "$work/out"
 
 # calibrate
 expect 2 "--target-hz: must be a finite number of Hz above 0, got 'abc'" -- "$rsi" calibrate "$good" --target-hz abc
@@ -179,6 +179,103 @@ expect 2 "key 'campaign': missing or empty" -- "$rsi" campaign "$work/no-campaig
 expect 2 "key 'campaign': cb with 700 modes: must be in [0, 638]" -- "$rsi" campaign "$work/campaign-too-many.json" --out "$work/out"
 expect 2 "key 'campaign': guyan with 3 modes: must be in [0, 0]" -- "$rsi" campaign "$work/campaign-guyan-modes.json" --out "$work/out"
 expect 2 "campaign[0].method': must be \"cb\", \"ccm\" or \"guyan\"" -- "$rsi" campaign "$work/campaign-method.json" --out "$work/out"
+
+
+# Component cases (issue 11): imported models with bad files. A 2-node,
+# 6-dof model; each variant breaks one thing. The CalculiX variants name
+# the matrices ccx would have written (calculix_matrices), so no ccx runs.
+mkdir -p "$work/ccx"
+printf '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\n2\n' >"$work/ccx/deck.inp"
+good_dof='1.1\n1.2\n1.3\n2.1\n2.2\n2.3\n'
+good_sti='1 1 4.0\n1 4 -1.0\n2 2 4.0\n3 3 4.0\n4 4 2.0\n5 5 2.0\n6 6 2.0\n'
+good_mas='1 1 1.0\n2 2 1.0\n3 3 1.0\n4 4 1.0\n5 5 1.0\n6 6 1.0\n'
+ccx_variant() { # NAME DOF STI MAS [BOUNDARY_JSON]
+  local name=$1 boundary=${5:-'{"node_set": "TIP"}'}
+  printf "$2" >"$work/ccx/$name.dof"
+  printf "$3" >"$work/ccx/$name.sti"
+  printf "$4" >"$work/ccx/$name.mas"
+  printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/%s"}, "boundary": %s, "units": "N, mm, t, s"}}\n' \
+    "$name" "$boundary" >"$work/ccx-$name.json"
+}
+ccx_variant good "$good_dof" "$good_sti" "$good_mas"
+ccx_variant truncated "$good_dof" '1 1 4.0\n1 4\n' "$good_mas"
+ccx_variant text "$good_dof" '1 1 4.0\n1 x -1.0\n' "$good_mas"
+ccx_variant beyond "$good_dof" "${good_sti}7 7 1.0\n" "$good_mas"
+ccx_variant asymmetric "$good_dof" "${good_sti}4 1 -1.5\n" "$good_mas"
+ccx_variant nan "$good_dof" "$good_sti" '1 1 nan\n2 2 1.0\n3 3 1.0\n4 4 1.0\n5 5 1.0\n6 6 1.0\n'
+ccx_variant inf "$good_dof" '1 1 inf\n6 6 1.0\n' "$good_mas"
+ccx_variant zero-mass "$good_dof" "$good_sti" '1 1 1.0\n2 2 1.0\n3 3 0.0\n4 4 1.0\n5 5 1.0\n6 6 1.0\n'
+ccx_variant negative-mass "$good_dof" "$good_sti" '1 1 1.0\n2 2 1.0\n3 3 1.0\n4 4 -1.0\n5 5 1.0\n6 6 1.0\n'
+ccx_variant dof-count "${good_dof}3.1\n" "$good_sti" "$good_mas"
+ccx_variant dof-text "1.1\n1.x\n" "$good_sti" "$good_mas"
+ccx_variant no-node "$good_dof" "$good_sti" "$good_mas" '{"nodes": [2, 99]}'
+ccx_variant no-set "$good_dof" "$good_sti" "$good_mas" '{"node_set": "HUB"}'
+ccx_variant twice "$good_dof" "$good_sti" "$good_mas" '{"nodes": [2, 2]}'
+printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"}}\n' >"$work/ccx-run.json"
+printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/no-deck.inp"}, "boundary": {"nodes": [2]}, "units": "N, mm, t, s"}}\n' >"$work/ccx-no-deck.json"
+printf '{"component": {"name": "tiny", "source": {"abaqus": "x.inp"}, "units": "N"}}\n' >"$work/source-kind.json"
+printf '{"component": {"name": "a/b", "source": {"matrix_market": "mm"}, "units": "N"}}\n' >"$work/name-slash.json"
+printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp"}, "units": "N"}}\n' >"$work/no-boundary.json"
+printf '{"component": {"name": "tiny", "source": {"matrix_market": "mm"}, "units": "N", "rotation_axis": [0, 0, 0]}}\n' >"$work/axis.json"
+printf '{"component": {"name": "tiny", "source": {"matrix_market": "mm"}, "units": "N", "colour": 1}}\n' >"$work/component-unknown.json"
+for cmd in modes export reduce; do
+  extra=()
+  [ "$cmd" = reduce ] && extra=(--method cb)
+  expect 2 "ccx/truncated.sti:2: expected a number as the third field" -- "$rsi" "$cmd" "$work/ccx-truncated.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/text.sti:2: expected 'row col value' with integer row and col" -- "$rsi" "$cmd" "$work/ccx-text.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/beyond.sti:8: index 7 outside [1, 6]" -- "$rsi" "$cmd" "$work/ccx-beyond.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/asymmetric.sti:8: not symmetric: (4, 1) = -1.5 but (1, 4) = -1 at line 2" -- "$rsi" "$cmd" "$work/ccx-asymmetric.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/nan.mas:1: value is not finite" -- "$rsi" "$cmd" "$work/ccx-nan.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/inf.sti:1: value is not finite" -- "$rsi" "$cmd" "$work/ccx-inf.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/zero-mass.mas:3: diagonal entry (3, 3) = 0: the mass diagonal must be positive" -- "$rsi" "$cmd" "$work/ccx-zero-mass.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/negative-mass.mas:4: diagonal entry (4, 4) = -1: the mass diagonal must be positive" -- "$rsi" "$cmd" "$work/ccx-negative-mass.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/dof-count.sti: the largest row index is 6 but the .dof file lists 7 dofs" -- "$rsi" "$cmd" "$work/ccx-dof-count.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx/dof-text.dof:2: expected 'node.direction'" -- "$rsi" "$cmd" "$work/ccx-dof-text.json" "${extra[@]}" --out "$work/out"
+  expect 2 "boundary node 99 is not a node of the deck" -- "$rsi" "$cmd" "$work/ccx-no-node.json" "${extra[@]}" --out "$work/out"
+  expect 2 "has no *NSET named HUB" -- "$rsi" "$cmd" "$work/ccx-no-set.json" "${extra[@]}" --out "$work/out"
+  expect 2 "boundary node 2 is listed twice" -- "$rsi" "$cmd" "$work/ccx-twice.json" "${extra[@]}" --out "$work/out"
+  expect 2 "ccx (CalculiX) not found on PATH" -- env PATH=/nonexistent "$rsi" "$cmd" "$work/ccx-run.json" "${extra[@]}" --ccx-cache "$work/out/cache" --out "$work/out"
+  expect 2 "key 'component.source.calculix_deck': '$work/ccx/no-deck.inp' is not a file" -- "$rsi" "$cmd" "$work/ccx-no-deck.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.source': must be {\"calculix_deck\": file" -- "$rsi" "$cmd" "$work/source-kind.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.name': must be a plain folder name" -- "$rsi" "$cmd" "$work/name-slash.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.boundary': missing (required for a calculix_deck source)" -- "$rsi" "$cmd" "$work/no-boundary.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.rotation_axis': must be three finite numbers, not all zero" -- "$rsi" "$cmd" "$work/axis.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.colour': unknown key" -- "$rsi" "$cmd" "$work/component-unknown.json" "${extra[@]}" --out "$work/out"
+  expect 2 "--source: only for a component case" -- "$rsi" "$cmd" "$good" "${extra[@]}" --source "$work/ccx/deck.inp" --out "$work/out"
+done
+expect 2 "--part: the case $work/ccx-good.json has one component, 'tiny', got 'casing'" -- "$rsi" modes "$work/ccx-good.json" --part casing --out "$work/out"
+
+# Matrix Market folders in rsi export's layout (the good one written by rsi export).
+"$rsi" export "$work/ccx-good.json" --out "$work/mm" >/dev/null
+mm_variant() { # NAME FILE CONTENT: a copy of the good folder with FILE replaced
+  cp -r "$work/mm/tiny" "$work/mm/$1"
+  printf "$3" >"$work/mm/$1/$2"
+  printf '{"component": {"name": "tiny", "source": {"matrix_market": "mm/%s"}, "units": "N, mm, t, s"}}\n' "$1" >"$work/mm-$1.json"
+}
+mm_variant truncated K.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 7\n1 1 4\n4 1 -1\n'
+mm_variant banner K.mtx '%%%%MatrixMarket matrix array real general\n6 6 7\n'
+mm_variant size-line M.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 5 6\n'
+mm_variant upper M.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 2\n1 1 1\n1 2 0.5\n'
+mm_variant inf M.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 1\n1 1 -inf\n'
+mm_variant rows K.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n5 5 1\n1 1 4\n'
+mm_variant asymmetric K.mtx '%%%%MatrixMarket matrix coordinate real general\n6 6 3\n1 1 4\n4 1 -1\n1 4 -1.001\n'
+mm_variant dofs dofs.csv 'index,node,kind,boundary\n0,1,ux,0\n2,1,uy,0\n'
+mm_variant no-diagonal M.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 5\n1 1 1\n2 2 1\n3 3 1\n4 4 1\n6 6 1\n'
+mm_variant nodes nodes.csv 'node,x,y,z\n1,0,0,0\n'
+for cmd in modes export reduce; do
+  extra=()
+  [ "$cmd" = reduce ] && extra=(--method cb)
+  expect 2 "mm/truncated/K.mtx: the size line announces 7 entries, the file holds 2 (truncated?)" -- "$rsi" "$cmd" "$work/mm-truncated.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/banner/K.mtx:1: expected the banner" -- "$rsi" "$cmd" "$work/mm-banner.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/size-line/M.mtx:2: size line must be 'n n entries'" -- "$rsi" "$cmd" "$work/mm-size-line.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/upper/M.mtx:4: a symmetric Matrix Market file stores the lower triangle" -- "$rsi" "$cmd" "$work/mm-upper.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/inf/M.mtx:3: value is not finite" -- "$rsi" "$cmd" "$work/mm-inf.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/rows/K.mtx: 5 rows, but dofs.csv lists 6 dofs" -- "$rsi" "$cmd" "$work/mm-rows.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/asymmetric/K.mtx:5: not symmetric" -- "$rsi" "$cmd" "$work/mm-asymmetric.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/dofs/dofs.csv:3: index must be 1 (rows in order), got 2" -- "$rsi" "$cmd" "$work/mm-dofs.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/no-diagonal/M.mtx: no diagonal entry (5, 5): the mass diagonal must be positive" -- "$rsi" "$cmd" "$work/mm-no-diagonal.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/nodes/dofs.csv: node 2 has dofs but no line in nodes.csv" -- "$rsi" "$cmd" "$work/mm-nodes.json" "${extra[@]}" --out "$work/out"
+done
 
 # no or unknown subcommand; help
 expect 2 "frobnicate" -- "$rsi" frobnicate "$good"

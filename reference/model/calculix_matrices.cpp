@@ -43,7 +43,7 @@ DofMap read_calculix_dofs(const std::string& path) {
 
 namespace {
 
-Eigen::SparseMatrix<double> read_matrix(const std::string& path, int n) {
+Eigen::SparseMatrix<double> read_matrix(const std::string& path, int n, bool mass) {
   const std::string text = read_whole_file(path);
   const CoordinateEntries entries = parse_coordinate_entries(text, 0, 1, n, path);
   if (entries.size() == 0) throw ImportError(path + ": no entry (empty file)");
@@ -54,6 +54,7 @@ Eigen::SparseMatrix<double> read_matrix(const std::string& path, int n) {
     throw ImportError(path + ": the largest row index is " + std::to_string(largest + 1) +
                       " but the .dof file lists " + std::to_string(n) +
                       " dofs: the matrix and the dof file do not belong together");
+  if (mass) check_positive_diagonal(entries, n, path);
   return symmetric_matrix(entries, n, path);
 }
 
@@ -66,8 +67,8 @@ Component read_calculix_component(const std::string& prefix, const CalculixDeck&
   c.name = name;
   c.dofs = read_calculix_dofs(prefix + ".dof");
   const int n = c.n_dofs();
-  c.stiffness = read_matrix(prefix + ".sti", n);
-  c.mass = read_matrix(prefix + ".mas", n);
+  c.stiffness = read_matrix(prefix + ".sti", n, false);
+  c.mass = read_matrix(prefix + ".mas", n, true);
   std::unordered_set<int> used;
   for (const DofInfo& d : c.dofs)
     used.insert(d.node);

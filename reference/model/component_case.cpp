@@ -75,13 +75,18 @@ ComponentCase parse_component_case(const json& document, const std::string& path
 
   const json& sj = cj.contains("source") ? cj.at("source") : json();
   ObjectReader source = comp.object("source");
-  if (!sj.is_object() || sj.size() != 1 ||
-      !(sj.contains("calculix_deck") || sj.contains("matrix_market")))
-    comp.fail(comp.full("source"), "must be {\"calculix_deck\": file} or "
-                                       "{\"matrix_market\": folder}, got " + sj.dump().substr(0, 80));
-  if (sj.contains("calculix_deck")) {
+  const bool deck = sj.is_object() && sj.contains("calculix_deck") &&
+                    (sj.size() == 1 || (sj.size() == 2 && sj.contains("calculix_matrices")));
+  const bool folder = sj.is_object() && sj.size() == 1 && sj.contains("matrix_market");
+  if (!deck && !folder)
+    comp.fail(comp.full("source"), "must be {\"calculix_deck\": file[, \"calculix_matrices\": "
+                                   "\"dir/JOB\"]} or {\"matrix_market\": folder}, got " +
+                                       sj.dump().substr(0, 80));
+  if (deck) {
     c.source = ComponentSource::calculix_deck;
     c.source_path = resolve(string_value(source, sj, "calculix_deck"), path);
+    if (sj.contains("calculix_matrices"))
+      c.calculix_matrices = resolve(string_value(source, sj, "calculix_matrices"), path);
   } else {
     c.source = ComponentSource::matrix_market;
     c.source_path = resolve(string_value(source, sj, "matrix_market"), path);
@@ -181,7 +186,10 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                               [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
         throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
                           std::to_string(id) + " is not a node of the deck " + source);
-    component = read_calculix_component(calculix_matrices(deck, options.ccx_cache), deck,
+    const std::string job = c.calculix_matrices.empty()
+                                ? calculix_matrices(deck, options.ccx_cache)
+                                : c.calculix_matrices;
+    component = read_calculix_component(job, deck,
                                         boundary, c.name);
   }
   component.units = c.units;

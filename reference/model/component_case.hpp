@@ -7,6 +7,9 @@
 //
 //   {"component": {"name": "rotor37",
 //                  "source": {"calculix_deck": "../../../shared/external/rotor37/blade.inp"},
+//                  (optionally with "calculix_matrices": "dir/JOB", the prefix of
+//                   JOB.sti/.mas/.dof a ccx run of the deck wrote; or instead
+//                   {"matrix_market": "folder"})
 //                  "boundary": {"nodes": [188, 190, ...]},
 //                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
 //    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
@@ -38,6 +41,9 @@ struct ComponentCase {
   std::string name;
   ComponentSource source = ComponentSource::calculix_deck;
   std::string source_path;                 ///< resolved against the case file's folder
+  /// calculix_deck only: JOB prefix of .sti/.mas/.dof already written by
+  /// ccx (then ccx is not run); empty: rsi runs ccx into its cache.
+  std::string calculix_matrices;
   std::vector<int> boundary_nodes;         ///< explicit ids, or
   std::string boundary_node_set;           ///< an *NSET of the deck (upper case)
   bool boundary_from_dofs = false;         ///< matrix_market: dofs.csv's flags

@@ -93,6 +93,24 @@ CoordinateEntries parse_coordinate_entries(std::string_view text, size_t offset,
   return e;
 }
 
+void check_positive_diagonal(const CoordinateEntries& e, int n, const std::string& path) {
+  std::vector<char> seen(n, 0);
+  for (size_t k = 0; k < e.size(); ++k)
+    if (e.row[k] == e.col[k]) {
+      if (!(e.value[k] > 0.0)) {
+        std::ostringstream why;
+        why << path << ":" << e.line[k] << ": diagonal entry (" << e.row[k] + 1 << ", "
+            << e.col[k] + 1 << ") = " << e.value[k] << ": the mass diagonal must be positive";
+        throw ImportError(why.str());
+      }
+      seen[e.row[k]] = 1;
+    }
+  for (int i = 0; i < n; ++i)
+    if (!seen[i])
+      throw ImportError(path + ": no diagonal entry (" + std::to_string(i + 1) + ", " +
+                        std::to_string(i + 1) + "): the mass diagonal must be positive");
+}
+
 Eigen::SparseMatrix<double> symmetric_matrix(const CoordinateEntries& e, int n,
                                              const std::string& path) {
   const size_t m = e.size();

@@ -41,6 +41,11 @@ CoordinateEntries parse_coordinate_entries(std::string_view text, size_t offset,
 Eigen::SparseMatrix<double> symmetric_matrix(const CoordinateEntries& entries, int n,
                                              const std::string& path);
 
+/// Every diagonal entry given and positive (a mass matrix); throws
+/// ImportError naming `path` and the line of a non-positive one, or the
+/// first row without a diagonal entry.
+void check_positive_diagonal(const CoordinateEntries& entries, int n, const std::string& path);
+
 /// The next line of `text` from `offset` (without its end of line), and
 /// `offset` moved past it; false at the end.
 bool next_line(std::string_view text, size_t& offset, std::string_view& line);

@@ -112,7 +112,8 @@ std::vector<ComponentNode> read_nodes_csv(const std::string& path) {
 
 } // namespace
 
-Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path) {
+Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path,
+                                                         bool positive_diagonal) {
   const std::string text = read_whole_file(path);
   size_t offset = 0;
   std::string_view line;
@@ -154,6 +155,7 @@ Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path
       if (e.row[k] < e.col[k])
         fail(path, e.line[k],
              "a symmetric Matrix Market file stores the lower triangle (row >= col)");
+  if (positive_diagonal) check_positive_diagonal(e, n, path);
   return symmetric_matrix(e, n, path);
 }
 
@@ -162,8 +164,8 @@ Component read_matrix_market_component(const std::string& folder, const std::str
   Component c;
   c.name = name;
   c.dofs = read_dofs_csv(folder + "/dofs.csv");
-  c.stiffness = read_symmetric_matrix_market(folder + "/K.mtx");
-  c.mass = read_symmetric_matrix_market(folder + "/M.mtx");
+  c.stiffness = read_symmetric_matrix_market(folder + "/K.mtx", false);
+  c.mass = read_symmetric_matrix_market(folder + "/M.mtx", true);
   for (const auto& [matrix, file] : {std::pair{&c.stiffness, "K.mtx"}, {&c.mass, "M.mtx"}})
     if (matrix->rows() != c.n_dofs())
       throw ImportError(folder + "/" + file + ": " + std::to_string(matrix->rows()) +

@@ -19,8 +19,10 @@ namespace rsi {
 
 /// A Matrix Market coordinate real matrix (symmetric: one triangle given,
 /// general: both, checked symmetric) as a symmetric n x n matrix, both
-/// triangles stored.
-Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path);
+/// triangles stored. `positive_diagonal` (a mass matrix): every diagonal
+/// entry given and positive, else ImportError naming the line.
+Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path,
+                                                         bool positive_diagonal);
 
 /// The component in `folder`; the boundary is the dofs flagged in dofs.csv
 /// unless `boundary_nodes` is given (every dof of each node).
