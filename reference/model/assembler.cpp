@@ -25,9 +25,15 @@ void Assembler::scatter(const Eigen::Ref<const Eigen::MatrixXd>& e,
 Eigen::SparseMatrix<double> Assembler::build(const Triplets& t) const {
   Eigen::SparseMatrix<double> m(m_n, m_n);
   m.setFromTriplets(t.begin(), t.end());
+  // The sums for (i, j) and (j, i) add the same terms in other orders (and
+  // rotated element matrices are symmetric only to round-off): make the
+  // matrix exactly symmetric, 0.5 (a_ij + a_ji) being the same double both
+  // ways, so one stored triangle (Matrix Market, dsygvd) is the whole matrix.
+  const Eigen::SparseMatrix<double> transposed = m.transpose();
+  Eigen::SparseMatrix<double> symmetric = 0.5 * (m + transposed);
   // The coefficients make exact zeros only by cancellation; drop those.
-  m.prune(0.0);
-  return m;
+  symmetric.prune(0.0);
+  return symmetric;
 }
 
 Eigen::SparseMatrix<double> block_diagonal(const Eigen::SparseMatrix<double>& a,
