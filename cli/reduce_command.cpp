@@ -13,11 +13,13 @@
 namespace rsi {
 
 int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
-  if (options.method != "cb" && options.method != "ccm" && options.method != "guyan")
-    throw UsageError("--method: must be cb, ccm or guyan, got '" + options.method + "'");
+  if (options.method != "cb" && options.method != "ccm" && options.method != "guyan" &&
+      options.method != "macneal")
+    throw UsageError("--method: must be cb, ccm, guyan or macneal, got '" + options.method + "'");
   const Case c = load_case(options.case_path);
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, options.method, options.modes);
+  // With a massless boundary (MacNeal) the boundary is condensed first (critical_step.hpp).
   const double omega_max = reduced_omega_max(basis);
   directories.make(options.out, "--out");
   write_symmetric_matrix_market(options.out + "/K.mtx", basis.stiffness.sparseView());
@@ -32,13 +34,17 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
   j["boundary_position"] = basis.boundary_position;
   j["omega_max"] = omega_max;
   j["critical_dt"] = 2.0 / omega_max;
-  if (basis.method == "ccm") j["cond_RB"] = basis.cond_rb;
+  if (basis.massless_boundary) j["massless_boundary"] = true;
+  if (basis.method == "ccm" || basis.method == "macneal") j["cond_RB"] = basis.cond_rb;
   j["build_seconds"] = basis.build_seconds;
   write_text_file(options.out + "/basis.json", j.dump(2) + "\n");
   std::printf("%s: %s with %d modes: %d -> %d dofs; omega_max %.6e rad/s, critical step %.6e s",
               c.source.c_str(), basis.method.c_str(), basis.n_modes, bd.n_dofs(), basis.n_reduced(),
               omega_max, 2.0 / omega_max);
-  if (basis.method == "ccm") std::printf(", cond(R_B) %.3e", basis.cond_rb);
+  if (basis.method == "ccm" || basis.method == "macneal")
+    std::printf(", cond(R_B) %.3e", basis.cond_rb);
+  if (basis.massless_boundary)
+    std::printf(", massless boundary (omega_max of the condensed model)");
   std::printf("; built in %.3f s\nwrote %s/{K.mtx,M.mtx,T.mtx,basis.json}\n", basis.build_seconds,
               options.out.c_str());
   return 0;

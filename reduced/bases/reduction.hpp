@@ -9,7 +9,8 @@
 
 namespace rsi {
 
-/// method: "cb" (modes = eta), "ccm" (modes = psi) or "guyan" (modes = 0).
+/// method: "cb" (modes = eta), "ccm" (modes = psi), "guyan" (modes = 0) or
+/// "macneal" (modes = psi >= 1).
 /// Throws ReductionError for an unknown method or a mode count out of range.
 ReducedBasis reduce_bladed_disk(const BladedDisk& bladed_disk, const std::string& method,
                                 int modes);
