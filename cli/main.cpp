@@ -133,7 +133,7 @@ int main(int argc, char** argv) {
 
   const std::string modes_allowed =
       "an integer in [0, the method's maximum] (cb, ccm: the dofs minus the 44 boundary dofs, "
-      "638 for the default case; guyan: 0)";
+      "638 for the default case; macneal: the same, from 1; guyan: 0)";
 
   rsi::ModesOptions modes;
   CLI::App* modes_cmd = app.add_subcommand("modes", "Lowest modes of one component -> DIR/modes.csv");
@@ -199,10 +199,11 @@ int main(int argc, char** argv) {
   reduce_cmd->add_option("case", reduce.case_path, "case file (JSON)")
       ->required()
       ->check(case_file());
-  reduce_cmd->add_option("--method", reduce.method, "cb, ccm or guyan")
+  reduce_cmd->add_option("--method", reduce.method, "cb, ccm, guyan or macneal")
       ->required()
-      ->check(one_of({"cb", "ccm", "guyan"}));
-  reduce_cmd->add_option("--modes", reduce.modes, "fixed-interface (cb) or free (ccm) modes")
+      ->check(one_of({"cb", "ccm", "guyan", "macneal"}));
+  reduce_cmd
+      ->add_option("--modes", reduce.modes, "fixed-interface (cb) or free (ccm, macneal) modes")
       ->capture_default_str()
       ->check(integer_in(0, 1000000000, modes_allowed));
   reduce_cmd->add_option("--out", reduce.out, "output directory")

@@ -7,14 +7,16 @@
 #include "commands.hpp"
 #include "component_input.hpp"
 #include "output_files.hpp"
+#include "critical_step.hpp"
 #include "reduced_run.hpp"
 #include "reduction.hpp"
 
 namespace rsi {
 
 int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
-  if (options.method != "cb" && options.method != "ccm" && options.method != "guyan")
-    throw UsageError("--method: must be cb, ccm or guyan, got '" + options.method + "'");
+  if (options.method != "cb" && options.method != "ccm" && options.method != "guyan" &&
+      options.method != "macneal")
+    throw UsageError("--method: must be cb, ccm, guyan or macneal, got '" + options.method + "'");
   const ComponentInput input = load_component_input(options.case_path, "", options.load);
   const Component& c = input.component;
   if (c.boundary.empty())
@@ -22,6 +24,7 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
                      " has no boundary dofs to keep; a reduction needs them");
   const ReducedBasis basis =
       reduce(c.stiffness, c.mass, c.boundary, options.method, options.modes);
+  // With a massless boundary (MacNeal) the boundary is condensed first (critical_step.hpp).
   const double omega_max = reduced_omega_max(basis);
   directories.make(options.out, "--out");
   write_symmetric_matrix_market(options.out + "/K.mtx", basis.stiffness.sparseView());
@@ -37,7 +40,8 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
   j["boundary_position"] = basis.boundary_position;
   j["omega_max"] = omega_max;
   j["critical_dt"] = 2.0 / omega_max;
-  if (basis.method == "ccm") j["cond_RB"] = basis.cond_rb;
+  if (basis.massless_boundary) j["massless_boundary"] = true;
+  if (basis.method == "ccm" || basis.method == "macneal") j["cond_RB"] = basis.cond_rb;
   j["build_seconds"] = basis.build_seconds;
   j["peak_memory_bytes"] = peak_memory_bytes();
   write_text_file(options.out + "/basis.json", j.dump(2) + "\n");
@@ -45,7 +49,10 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
               "%.6e s",
               input.case_source.c_str(), c.name.c_str(), basis.method.c_str(), basis.n_modes,
               c.n_dofs(), basis.n_reduced(), omega_max, 2.0 / omega_max);
-  if (basis.method == "ccm") std::printf(", cond(R_B) %.3e", basis.cond_rb);
+  if (basis.method == "ccm" || basis.method == "macneal")
+    std::printf(", cond(R_B) %.3e", basis.cond_rb);
+  if (basis.massless_boundary)
+    std::printf(", massless boundary (omega_max of the condensed model)");
   std::printf("; built in %.3f s, peak memory %.0f MB\nwrote %s/{K.mtx,M.mtx,T.mtx,basis.json}\n",
               basis.build_seconds, peak_memory_bytes() / 1048576.0, options.out.c_str());
   return 0;

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "case_file.hpp"
+#include "critical_step.hpp"
 #include "reduced_basis.hpp"
 #include "run_monitor.hpp"
 
@@ -35,17 +36,15 @@ struct ReducedRunResult {
   Eigen::MatrixXd field;
 };
 
-/// Throws ReductionError (method, mode count, R_B), StabilityError (dt at
-/// or above the reduced model's 2/omega_max, not forced) or
-/// ReducedIntegrationError. A blow-up stops the run (summary.completed false).
+/// Throws ReductionError (method, mode count, R_B, a massless boundary),
+/// StabilityError (dt at or above the reduced model's 2/omega_max, not
+/// forced) or ReducedIntegrationError. A blow-up stops the run
+/// (summary.completed false).
 ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
                              const ReducedRunOptions& options);
 
 /// The same with a basis built (or altered) by the caller.
 ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
                              const ReducedRunOptions& options);
-
-/// omega_max of the reduced bladed disk (dense generalized eigenproblem).
-double reduced_omega_max(const ReducedBasis& basis);
 
 } // namespace rsi

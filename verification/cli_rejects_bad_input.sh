@@ -151,12 +151,13 @@ expect 2 "--target-hz: must be a finite number of Hz above 0, got '-44'" -- "$rs
 expect 2 "--target-hz: must be a finite number of Hz above 0, got 'inf'" -- "$rsi" calibrate "$good" --target-hz inf
 
 # reduce
-expect 2 "--method is required: cb, ccm or guyan" -- "$rsi" reduce "$good" --out "$work/out"
-expect 2 "--method: must be cb, ccm or guyan, got 'mac'" -- "$rsi" reduce "$good" --method mac --out "$work/out"
-expect 2 "--method: must be cb, ccm or guyan, got 'full'" -- "$rsi" reduce "$good" --method full --out "$work/out"
+expect 2 "--method is required: cb, ccm, guyan or macneal" -- "$rsi" reduce "$good" --out "$work/out"
+expect 2 "--method: must be cb, ccm, guyan or macneal, got 'mac'" -- "$rsi" reduce "$good" --method mac --out "$work/out"
+expect 2 "--method: must be cb, ccm, guyan or macneal, got 'full'" -- "$rsi" reduce "$good" --method full --out "$work/out"
 expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" reduce "$good" --method cb --modes 639 --out "$work/out"
 expect 2 "--modes: Craig-Chang-Martinez takes 0 to 638" -- "$rsi" reduce "$good" --method ccm --modes 639 --out "$work/out"
 expect 2 "--modes: Guyan reduction keeps no modes" -- "$rsi" reduce "$good" --method guyan --modes 3 --out "$work/out"
+expect 2 "--modes: MacNeal takes 1 to 638" -- "$rsi" reduce "$good" --method macneal --modes 0 --out "$work/out"
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" reduce "$good" --method cb --modes ten --out "$work/out"
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" reduce "$good" --method cb --modes -1 --out "$work/out"
 

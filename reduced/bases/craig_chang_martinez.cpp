@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -24,19 +25,13 @@ const char* const stiffness_remedy =
 
 } // namespace
 
-ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
-                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                  int psi) {
+ResidualFlexibilityTransformation
+residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness,
+                                    const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                    int psi, const std::string& name) {
   const int n = p.n();
   const int nb = p.n_boundary();
-  if (psi < 0 || psi > n - nb)
-    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(n - nb) +
-                         " free-interface modes (dofs minus boundary dofs), got " +
-                         std::to_string(psi));
-  const auto start = std::chrono::steady_clock::now();
-  ReducedBasis basis;
-  basis.method = "ccm";
-  basis.n_modes = psi;
+  ResidualFlexibilityTransformation out;
 
   // R(:, B), boundary columns only. With few free modes (Lanczos): eq. 14,
   // K^-1 E_B - Phi_1 Omega_1^-1 Phi_1B^T. With many, the dense solver has
@@ -52,7 +47,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
     const double floor = n * std::numeric_limits<double>::epsilon() * all.omega_squared(n - 1);
     if (!(all.omega_squared(0) > floor)) {
       std::ostringstream message;
-      message << "Craig-Chang-Martinez: the bladed-disk stiffness K (" << square_size(n)
+      message << name << ": the bladed-disk stiffness K (" << square_size(n)
               << ") is singular or indefinite (lowest eigenvalue of K phi = omega^2 M phi "
               << all.omega_squared(0) << " rad^2/s^2 <= n eps lambda_max = " << floor << "); "
               << stiffness_remedy;
@@ -65,8 +60,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   } else {
     r = solve_positive_definite(
         stiffness, place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)),
-        "Craig-Chang-Martinez: the bladed-disk stiffness K (" + square_size(n) + ")",
-        stiffness_remedy);
+        name + ": the bladed-disk stiffness K (" + square_size(n) + ")", stiffness_remedy);
     if (psi > 0) {
       const Modes free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
       phi1 = free.shapes;
@@ -80,14 +74,15 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
                                   0.5 * (r_b + r_b.transpose()), Eigen::EigenvaluesOnly)
                                   .eigenvalues();
-  basis.cond_rb = eig(0) > 0.0 ? eig(nb - 1) / eig(0) : std::numeric_limits<double>::infinity();
+  out.cond_rb = eig(0) > 0.0 ? eig(nb - 1) / eig(0) : std::numeric_limits<double>::infinity();
   const double limit = 1.0 / (n * std::numeric_limits<double>::epsilon());
-  if (!(basis.cond_rb < limit)) {
+  if (!(out.cond_rb < limit)) {
     std::ostringstream message;
-    message << "Craig-Chang-Martinez: the residual flexibility R_B of the boundary set is "
+    message << name
+            << ": the residual flexibility R_B of the boundary set is "
                "numerically singular, "
                "cond(R_B) = "
-            << basis.cond_rb << " >= 1/(n eps) = " << limit
+            << out.cond_rb << " >= 1/(n eps) = " << limit
             << "; attachment modes on rotation dofs or too many free modes cause this (paper §5.3)";
     throw ReductionError(message.str());
   }
@@ -105,7 +100,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
           r_b.transpose().sparseView(), transposed_rows(r.low, p.boundary),
           {transposed_rows(r.value, p.interior), transposed_rows(r.low, p.interior)},
           [&](const Eigen::MatrixXd& rhs) { return Eigen::MatrixXd(r_b_factor.solve(rhs)); },
-          "Craig-Chang-Martinez: the attachment modes R(:, B) R_B^-1")
+          name + ": the attachment modes R(:, B) R_B^-1")
           .value.transpose();
   const Eigen::MatrixXd attachment = place_rows(n, p.interior, attachment_interior) +
                                      place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
@@ -116,7 +111,27 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
   // exactly so q_B is u_B.
   for (int b : p.boundary)
     t.row(b).tail(psi).setZero();
-  basis.transformation = t;
+  out.transformation = t;
+  return out;
+}
+
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  int psi) {
+  const int n = p.n();
+  const int nb = p.n_boundary();
+  if (psi < 0 || psi > n - nb)
+    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(n - nb) +
+                         " free-interface modes (dofs minus boundary dofs), got " +
+                         std::to_string(psi));
+  const auto start = std::chrono::steady_clock::now();
+  ReducedBasis basis;
+  basis.method = "ccm";
+  basis.n_modes = psi;
+  ResidualFlexibilityTransformation t =
+      residual_flexibility_transformation(stiffness, mass, p, psi, "Craig-Chang-Martinez");
+  basis.transformation = std::move(t.transformation);
+  basis.cond_rb = t.cond_rb;
   finish_basis(stiffness, mass, nb, 0, start, basis);
   return basis;
 }

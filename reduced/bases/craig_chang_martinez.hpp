@@ -17,12 +17,31 @@
 // dense path) is refused with ReductionError naming K.
 // Valid range: 0 <= psi <= n - n_B.
 
+#include <string>
+
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 
 #include "partition.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
+
+/// The transformation of eq. 20 alone, shared with MacNeal's method (same
+/// T, another mass): columns [attachment R(:, B) R_B^-1 | Phi_1 - attachment
+/// Phi_1B], q = (q_B, u_1), exact identity and zeros on the boundary rows.
+struct ResidualFlexibilityTransformation {
+  Eigen::MatrixXd transformation; ///< T, n x (n_B + psi)
+  double cond_rb = 0.0;           ///< cond(R_B)
+};
+
+/// T and cond(R_B) for psi in [0, n - n_B] (not checked here: the callers
+/// state their own range). Throws ReductionError, its message starting with
+/// `name`, for a singular or indefinite K or a numerically singular R_B.
+ResidualFlexibilityTransformation
+residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness,
+                                    const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                    int psi, const std::string& name);
 
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const Eigen::SparseMatrix<double>& mass, const Partition& p,

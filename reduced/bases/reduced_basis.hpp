@@ -1,7 +1,8 @@
 #pragma once
 // A reduction basis of the bladed disk: u = T q, with the boundary dofs
 // kept as physical coordinates inside q (SPEC §3), and the reduced matrices
-// K^ = T^T K T, M^ = T^T M T (paper eq. 6).
+// K^ = T^T K T, M^ = T^T M T (paper eq. 6); MacNeal's M^ is the kept
+// modes' mass alone, zero on the boundary (macneal.hpp).
 
 #include <stdexcept>
 #include <string>
@@ -19,14 +20,17 @@ public:
 };
 
 struct ReducedBasis {
-  std::string method;             ///< "cb", "ccm" or "guyan"
-  int n_modes = 0;                ///< eta (CB), psi (CCM), 0 (Guyan)
+  std::string method;             ///< "cb", "ccm", "guyan" or "macneal"
+  int n_modes = 0;                ///< eta (CB), psi (CCM, MacNeal), 0 (Guyan)
   Eigen::MatrixXd transformation; ///< T, n x r
   Eigen::MatrixXd stiffness;      ///< K^ = T^T K T, r x r
-  Eigen::MatrixXd mass;           ///< M^ = T^T M T, r x r
+  Eigen::MatrixXd mass;           ///< M^ = T^T M T, r x r (MacNeal: diag(0_B, I_psi))
   /// Position in q of each boundary dof, in the order of the partition's boundary.
   std::vector<int> boundary_position;
-  double cond_rb = 0.0;       ///< cond(R_B) (CCM only; 0 otherwise)
+  /// M^ is zero on the boundary rows and columns (MacNeal): (K^, M^) has
+  /// n_B infinite eigenvalues, the boundary follows a static balance.
+  bool massless_boundary = false;
+  double cond_rb = 0.0;       ///< cond(R_B) (CCM, MacNeal; 0 otherwise)
   double build_seconds = 0.0; ///< time to build T, K^, M^
 
   int n_reduced() const { return static_cast<int>(transformation.cols()); }

@@ -13,7 +13,8 @@
 
 namespace rsi {
 
-/// method: "cb" (modes = eta), "ccm" (modes = psi) or "guyan" (modes = 0).
+/// method: "cb" (modes = eta), "ccm" (modes = psi), "guyan" (modes = 0) or
+/// "macneal" (modes = psi >= 1).
 /// Throws ReductionError for an unknown method or a mode count out of range.
 ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
                     const Eigen::SparseMatrix<double>& mass, const std::vector<int>& boundary,

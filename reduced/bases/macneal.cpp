@@ -1,0 +1,38 @@
+#include "macneal.hpp"
+
+#include <chrono>
+#include <string>
+#include <utility>
+
+#include "craig_chang_martinez.hpp"
+#include "guyan.hpp"
+
+namespace rsi {
+
+ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi) {
+  const int n = p.n();
+  const int nb = p.n_boundary();
+  if (psi < 1 || psi > n - nb)
+    throw ReductionError("--modes: MacNeal takes 1 to " + std::to_string(n - nb) +
+                         " free-interface modes (dofs minus boundary dofs; the boundary is "
+                         "massless), got " +
+                         std::to_string(psi));
+  const auto start = std::chrono::steady_clock::now();
+  ReducedBasis basis;
+  basis.method = "macneal";
+  basis.n_modes = psi;
+  ResidualFlexibilityTransformation t =
+      residual_flexibility_transformation(stiffness, mass, p, psi, "MacNeal");
+  basis.transformation = std::move(t.transformation);
+  basis.cond_rb = t.cond_rb;
+  // K^ = T^T K T as CCM; finish_basis also forms CCM's T^T M T, which
+  // MacNeal replaces: the kept modes' unit mass, the residual mass dropped.
+  finish_basis(stiffness, mass, nb, 0, start, basis);
+  basis.mass.setZero();
+  basis.mass.bottomRightCorner(psi, psi).setIdentity();
+  basis.massless_boundary = true;
+  return basis;
+}
+
+} // namespace rsi
