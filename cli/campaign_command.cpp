@@ -10,15 +10,13 @@
 #include <sstream>
 #include <thread>
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "bladed_disk.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
 #include "output_files.hpp"
+#include "report_script.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
 #include "run_outputs.hpp"
@@ -45,26 +43,6 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
         (best < 0 || runs[i].run.modes < best))
       best = runs[i].run.modes;
   return best;
-}
-
-/// Runs the report generator on the campaign directory; its exit status.
-int make_report(const std::string& dir) {
-  const std::string python = "/usr/bin/python3";
-  const std::string script = std::string(RSI_REPORTS_DIR) + "/make_campaign_report.py";
-  std::vector<std::string> args{python, script, dir};
-  std::vector<char*> argv;
-  for (std::string& a : args)
-    argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
-  int status = 0;
-  pid_t waited = 0;
-  do
-    waited = waitpid(pid, &status, 0);
-  while (waited < 0 && errno == EINTR);
-  if (waited != pid) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
 } // namespace
@@ -179,7 +157,7 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
                                   [](const CampaignResult& r) { return r.error.empty(); });
   if (options.report) {
     std::fflush(stdout); // the table before the script's own lines
-    const int status = make_report(options.out);
+    const int status = run_report_script("make_campaign_report.py", options.out);
     if (status != 0) {
       std::fprintf(
           stderr,

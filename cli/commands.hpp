@@ -66,6 +66,13 @@ struct CampaignOptions {
   bool report = true;     ///< run reports/make_campaign_report.py at the end
 };
 
+struct ModalCampaignOptions {
+  std::string case_path;
+  std::string out = "out/modal-campaign";
+  bool report = true; ///< run reports/make_modal_report.py at the end
+  ComponentLoadOptions load;
+};
+
 /// The lowest `count` modes of a part ("bladed-disk" or "casing") and their
 /// modes.csv text (index,frequency_hz,nodal_diameter). Throws UsageError
 /// unless 1 <= count <= the part's dofs.
@@ -83,5 +90,6 @@ int run_calibrate(const CalibrateOptions& options);
 int run_simulate(const SimulateOptions& options, OutputDirectories& directories);
 int run_reduce(const ReduceOptions& options, OutputDirectories& directories);
 int run_campaign(const CampaignOptions& options, OutputDirectories& directories);
+int run_modal_campaign(const ModalCampaignOptions& options, OutputDirectories& directories);
 
 } // namespace rsi

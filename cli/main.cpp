@@ -231,6 +231,21 @@ int main(int argc, char** argv) {
   campaign_cmd->add_flag("!--no-report", campaign.report,
                          "skip the report (reports/make_campaign_report.py, python3 + matplotlib)");
 
+  rsi::ModalCampaignOptions modal_campaign;
+  CLI::App* modal_campaign_cmd = app.add_subcommand(
+      "modal-campaign",
+      "Modal convergence of every reduction of a component (no contact): reduced against full "
+      "frequencies -> DIR/{modal_convergence.csv,modal_errors.csv,modal_report.md}");
+  modal_campaign_cmd->add_option("case", modal_campaign.case_path, "component case file (JSON)")
+      ->required()
+      ->check(case_file());
+  modal_campaign_cmd->add_option("--out", modal_campaign.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  modal_campaign_cmd->add_flag("!--no-report", modal_campaign.report,
+                               "write the tables only, not modal_report.md and its figure");
+  add_component_options(*modal_campaign_cmd, modal_campaign.load);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -248,7 +263,7 @@ int main(int argc, char** argv) {
 
   if (app.get_subcommands().empty()) {
     std::fprintf(stderr, "rsi: error: a subcommand is required: modes, export, calibrate, "
-                         "reduce, simulate or campaign (see rsi --help)\n");
+                         "reduce, simulate, campaign or modal-campaign (see rsi --help)\n");
     return 2;
   }
   // Status of the subcommand: the exception kinds map to exit 2 (bad input) or 3 (numerical).
@@ -266,6 +281,7 @@ int main(int argc, char** argv) {
       if (*simulate_cmd) return rsi::run_simulate(simulate, directories);
       if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
       if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
+      if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, directories);
     } catch (const rsi::CaseError& e) {
       return failure("error", e, 2);
     } catch (const rsi::ImportError& e) {

@@ -1,0 +1,30 @@
+#include "report_script.hpp"
+
+#include <cerrno>
+#include <vector>
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace rsi {
+
+int run_report_script(const std::string& script, const std::string& dir) {
+  const std::string python = "/usr/bin/python3";
+  std::vector<std::string> args{python, std::string(RSI_REPORTS_DIR) + "/" + script, dir};
+  std::vector<char*> argv;
+  for (std::string& a : args)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
+  int status = 0;
+  pid_t waited = 0;
+  do
+    waited = waitpid(pid, &status, 0);
+  while (waited < 0 && errno == EINTR);
+  if (waited != pid) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+} // namespace rsi
