@@ -257,7 +257,7 @@ ModeRow mode_orthogonality(const Eigen::SparseMatrix<double>& k,
   return row;
 }
 
-bool full_modes_by_lanczos(const Component& c, int /*count*/) {
+bool full_modes_by_lanczos(const Component& c) {
   return c.n() > dense_limit;
 }
 
@@ -266,8 +266,7 @@ Modes full_modes(const Component& c, int count) {
 }
 
 ModeRow full_mode_row(const Component& c, const Modes& full) {
-  return mode_orthogonality(c.k(), c.m(), full, full_modes_by_lanczos(c, full.n_modes()),
-                            c.lambda_max());
+  return mode_orthogonality(c.k(), c.m(), full, full_modes_by_lanczos(c), c.lambda_max());
 }
 
 ModeRow fixed_interface_row(const Component& c, int eta) {
@@ -297,8 +296,7 @@ FreeModeRow free_mode_row(const Component& c, int psi, const Modes& full) {
   FreeModeRow row;
   row.modes = mode_orthogonality(c.k(), c.m(), free, lanczos, c.lambda_max());
   const Eigen::VectorXd free_bound = eigenvalue_bounds(c, free, lanczos);
-  const Eigen::VectorXd full_bound =
-      eigenvalue_bounds(c, full, full_modes_by_lanczos(c, full.n_modes()));
+  const Eigen::VectorXd full_bound = eigenvalue_bounds(c, full, full_modes_by_lanczos(c));
   for (int i = 0; i < std::min(psi, full.n_modes()); ++i) {
     const double err = std::abs(free.omega_squared(i) - full.omega_squared(i));
     row.eigenvalues.error = std::max(row.eigenvalues.error, err / full.omega_squared(i));

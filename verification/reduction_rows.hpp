@@ -8,8 +8,9 @@
 // row), the lowest modes (lowest_modes: dense up to dense_limit dofs,
 // Spectra's Lanczos above) and dense r x r reduced matrices.
 //
-// Every quantity here is computed independently of reduced/ except the
-// bases themselves: the static reference is a CHOLMOD supernodal
+// Every reference quantity is computed independently of reduced/ (which
+// supplies only the bases and, for MacNeal, the functions under test,
+// reduced_eigenvalues and reduced_omega_max): the static reference is a CHOLMOD supernodal
 // factorization of K (reduced/ solves K_II or K against other right-hand
 // sides and refines them), cond(K) and the extreme eigenvalues come from
 // Lanczos on K and on K^-1, the reduced eigenvalues from Eigen's dense
@@ -127,7 +128,8 @@ ModeRow mode_orthogonality(const Eigen::SparseMatrix<double>& k,
 /// The `count` lowest modes of the whole component (lowest_modes, automatic
 /// solver: dense up to dense_limit dofs, Lanczos above).
 Modes full_modes(const Component& c, int count);
-bool full_modes_by_lanczos(const Component& c, int count);
+/// Whether full_modes uses Lanczos (n > dense_limit) or dsygvd.
+bool full_modes_by_lanczos(const Component& c);
 
 /// Row of the full modes.
 ModeRow full_mode_row(const Component& c, const Modes& full);
@@ -252,7 +254,9 @@ struct MacNealRow {
   /// z_i the reduced eigenvector, T z_i = phi_i, the condensation being
   /// stationary) + n_B eps cond(K^_bb) |x_b|^T |K^_bb| |x_b| (the
   /// condensation's solve) + psi eps ||K_c||_inf (dense solve) + the kept
-  /// free modes' own error (Lanczos tol) + the full eigenvalue bound.
+  /// free modes' own error (lanczos_tol omega_i^2 when computed by Lanczos,
+  /// plus their rounding, taken as the full eigenvalue bound again) + the
+  /// full eigenvalue bound.
   Measure eigenvalues;
   double omega_max = 0.0;     ///< MacNeal's reduced omega_max [rad/s]
   double omega_psi = 0.0;     ///< the psi-th full omega [rad/s]

@@ -45,7 +45,7 @@ protected:
   }
   static const rows::Component& component() { return *s_c; }
   static const Modes& full() { return *s_full; }
-  static bool by_lanczos() { return rows::full_modes_by_lanczos(*s_c, n_full); }
+  static bool by_lanczos() { return rows::full_modes_by_lanczos(*s_c); }
   static ReducedBasis basis(const std::string& method, int modes) {
     return reduce_bladed_disk(*s_bd, method, modes);
   }
