@@ -2,7 +2,7 @@
 # needs when any is missing (apt-get; as root, or through sudo).
 rsi_packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev liblapacke-dev libgsl-dev
   libgtest-dev libspectra-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-matplotlib
-  python3-scipy python3-numpy)
+  python3-scipy python3-numpy gmsh calculix-ccx)
 
 rsi_install_dependencies() {
   local missing=()

@@ -673,7 +673,7 @@ TEST(GmshBladeCcx, MatrixStorageRowsAndModes) {
 TEST(GmshBladeCcx, DISABLED_ScalingStudy) {
   SKIP_WITHOUT("gmsh", "ccx");
   std::printf("  h [mm]  nodes   C3D10  ROOT    dofs  gmsh [s]  ccx matrices [s]  .sti [MB]\n");
-  for (const double h : {10.0, 20.0 / 3.0, 5.0, 10.0 / 3.0, 2.5, 2.0, 5.0 / 3.0}) {
+  for (const double h : {10.0, 20.0 / 3.0, 5.0, 10.0 / 3.0, 2.5, 2.0, 1.8, 5.0 / 3.0}) {
     GmshBladeSpec spec;
     spec.element_size = h;
     const WorkDir dir("scaling");

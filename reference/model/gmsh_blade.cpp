@@ -328,7 +328,14 @@ std::string gmsh_blade_geo(const GmshBladeSpec& spec) {
     << "Mesh.MeshSizeMax = " << number(spec.element_size) << ";\n"
     << "Mesh.ElementOrder = 2;\n"
     << "Mesh.SecondOrderLinear = 1;\n"
-    << "Mesh.Optimize = 1;\n";
+    << "Mesh.Optimize = 1;\n"
+    // gmsh 4.8's defaults, set here so that a user's ~/.gmsh-options
+    // cannot change the mesh.
+    << "Mesh.MeshSizeMin = 0;\nMesh.MeshSizeFactor = 1;\nMesh.MeshSizeFromPoints = 1;\n"
+    << "Mesh.MeshSizeFromCurvature = 0;\nMesh.MeshSizeExtendFromBoundary = 1;\n"
+    << "Mesh.Algorithm = 6;\nMesh.Algorithm3D = 1;\nMesh.RecombineAll = 0;\n"
+    << "Mesh.HighOrderOptimize = 0;\nMesh.OptimizeNetgen = 0;\nMesh.SaveAll = 0;\n"
+    << "General.NumThreads = 1;\n";
   return g.str();
 }
 
@@ -350,7 +357,9 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
                                          "-o",   "blade_gmsh.inp", "-nopopup"};
   const std::string where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
   const std::string gmsh_mesh = dir + "/blade_gmsh.inp";
-  fs::remove(gmsh_mesh, ec);
+  const std::string deck = dir + "/blade.inp";
+  fs::remove(gmsh_mesh, ec); // never read a previous run's files
+  fs::remove(deck, ec);
   const ChildResult run = run_child(command, dir, dir + "/gmsh.log");
   if (!run.started)
     throw GmshError("write_gmsh_blade_deck: cannot run '" + command_text(command) + "'" + where +
@@ -423,8 +432,8 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
     tip.push_back(best);
   }
 
-  const std::string deck = dir + "/blade.inp";
-  std::ofstream out(deck);
+  const std::string partial = deck + ".partial"; // renamed when complete
+  std::ofstream out(partial);
   out.imbue(std::locale::classic());
   out << "** rsi gmsh_blade (reference/model/gmsh_blade.hpp): a twisted, cambered plate blade on "
          "a\n"
@@ -458,7 +467,11 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
       << "*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE_MATERIAL\n"
       << "*BOUNDARY\nROOT, 1, 3\n";
   out.close();
-  if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + deck);
+  if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + partial);
+  fs::rename(partial, deck, ec);
+  if (ec)
+    throw std::runtime_error("write_gmsh_blade_deck: cannot rename " + partial + ": " +
+                             ec.message());
   return deck;
 }
 

@@ -51,15 +51,45 @@
 // script), blade_gmsh.inp (gmsh's mesh), gmsh.log (its output) and
 // blade.inp (the deck).
 //
-// Defaults (the members' initial values) give the coarse model used by
-// CI. Measured with gmsh 4.8.4 and ccx 2.20 (Debian), default geometry,
-// element_size varied; dofs = 3 (nodes - ROOT nodes), the rows of ccx's
-// .dof; gmsh = wall time of the gmsh run, ccx = wall time of
-// `*FREQUENCY, SOLVER=MATRIXSTORAGE` on a 2-core machine shared with
-// other jobs:
+// Defaults (the members' initial values) give the coarse model used by CI:
+// span 100, chord 40, thickness 3, camber 0.05, twist 30 deg, stagger
+// 30 deg, root block 50 x 12 x 20 at root_radius 150 (tip at radius 270),
+// element_size 10 [mm]; steel E = 210000 N/mm^2, nu = 0.3,
+// rho = 7.85e-9 t/mm^3.
 //
-//   element_size  nodes  C3D10  ROOT nodes  dofs   gmsh   ccx matrices
-//   10 (default)   (filled in below from the measurement)
+// Sizes measured with gmsh 4.8.4 and ccx 2.20 (Debian), default geometry,
+// element_size varied (verification/test_gmsh_blade, DISABLED_ScalingStudy).
+// dofs = 3 (nodes - ROOT nodes) = the rows of ccx's .dof; gmsh = wall time
+// of write_gmsh_blade_deck; ccx = wall time of `ccx` on the deck with one
+// `*FREQUENCY, SOLVER=MATRIXSTORAGE` step; .sti = size of the stiffness
+// file (.mas the same). 2-core machine shared with other jobs: times vary
+// by up to 2x between runs.
+//
+//   element_size  nodes   C3D10  ROOT    dofs  gmsh [s]  ccx [s]  .sti [MB]
+//   10 (default)   1426     658    59    4101    0.19      0.19       4.1
+//    6.667         2811    1359    97    8142    0.22      0.37       8.5
+//    5             4513    2199   163   13050    0.26      0.57      13.9
+//    3.333         9778    5010   303   28425    0.47      1.28      32.1
+//    2.5          18795    9967   547   54744    0.61      2.55      63.7
+//    2            29881   16339   787   87282    0.91      4.32     103.8
+//    1.8          37708   20811   983  110175    1.27      5.49     132.6
+//    1.667        51056   29834  1101  149865    1.51      7.79     189.2
+//
+// Down to element_size = thickness the plate is crossed by about one
+// element and the node count grows like element_size^-2 (a surface
+// refinement); below it like element_size^-3.
+//
+// First frequencies (ccx Lanczos, Hz) at element_size 10 / 5 / 2.5:
+// 290.35 / 287.51 / 286.13 (mode 1, near the beam estimates below),
+// 1370.5 / 1352.7 / 1346.0, 1641.7 / 1622.8 / 1614.8, 3152.8 / 3134.2 /
+// 3123.0, 4289.6 / 4211.3 / 4186.7; observed orders 1.04, 1.41, 1.26, 0.74,
+// 1.67 (pre-asymptotic; the re-entrant edge where the blade meets the block
+// limits the asymptotic order to about 1.09, see the test). Euler-Bernoulli
+// cantilever of span 100: 250.65 Hz for the flat plate 40 x 3, 303.0 Hz for
+// the cambered section (I = 132.4 instead of 90 mm^4). The FE model at
+// element_size 5 gives 251.5 Hz flat and untwisted, 297.0 cambered and
+// untwisted (camber +18 %), 251.0 flat and twisted (twist -0.2 %) and 287.5
+// cambered and twisted (twist -3.2 % on the cambered blade).
 //
 // Valid ranges (check_gmsh_blade_spec): see each member.
 
