@@ -339,58 +339,41 @@ std::string gmsh_blade_geo(const GmshBladeSpec& spec) {
   return g.str();
 }
 
-std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& dir) {
-  const std::string geo_text = gmsh_blade_geo(spec); // checks the spec
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec)
-    throw std::runtime_error("write_gmsh_blade_deck: cannot create " + dir + ": " + ec.message());
-  const std::string geo = dir + "/blade.geo";
-  {
-    std::ofstream out(geo);
-    out << geo_text;
-    if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + geo);
-  }
+namespace {
 
-  const std::vector<std::string> command{"gmsh", "blade.geo",      "-3",      "-format", "inp",
-                                         "-o",   "blade_gmsh.inp", "-nopopup"};
-  const std::string where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
-  const std::string gmsh_mesh = dir + "/blade_gmsh.inp";
-  const std::string deck = dir + "/blade.inp";
-  fs::remove(gmsh_mesh, ec); // never read a previous run's files
-  fs::remove(deck, ec);
+/// Runs gmsh on DIR/blade.geo; throws GmshError unless it exits with 0 and
+/// reports no error.
+void run_gmsh(const std::vector<std::string>& command, const std::string& dir,
+              const std::string& where) {
   const ChildResult run = run_child(command, dir, dir + "/gmsh.log");
   if (!run.started)
     throw GmshError("write_gmsh_blade_deck: cannot run '" + command_text(command) + "'" + where +
                     ": " + run.error + " (is gmsh installed and on PATH?)");
+  // gmsh 4.8 exits with 0 after errors in a script (unknown entity, failed
+  // boolean): its Error lines count as a failure too.
   if (!run.succeeded() || has_error_line(run.output)) {
-    std::string status = run.signal != 0 ? "killed by signal " + std::to_string(run.signal)
-                                         : "exit status " + std::to_string(run.exit_status);
+    const std::string status = run.signal != 0 ? "killed by signal " + std::to_string(run.signal)
+                                               : "exit status " + std::to_string(run.exit_status);
     throw GmshError("write_gmsh_blade_deck: '" + command_text(command) + "' failed (" + status +
                     (run.succeeded() ? ", but reported errors" : "") + ")" + where + ":\n" +
                     output_excerpt(run.output));
   }
+}
 
-  const GmshMesh mesh = read_gmsh_inp(gmsh_mesh);
-  auto fail = [&](const std::string& what) {
-    return GmshError("write_gmsh_blade_deck: the mesh of '" + command_text(command) + "'" + where +
-                     " " + what);
-  };
-  if (mesh.elements.empty()) throw fail("has no C3D10 element");
-
-  // Every element: its nodes exist, its corners are positively oriented,
-  // its midside nodes are the Abaqus edge midpoints (straight edges).
-  const double extent = spec.root_radius + spec.root_height + spec.span + spec.root_length;
-  const double tol = 1e-9 * extent;
+/// Checks every element (its nodes exist, its corners are positively
+/// oriented, its midside nodes are the Abaqus edge midpoints to `tol`);
+/// returns the nodes the elements use. `what` is an empty string when all
+/// is well, else the first problem.
+std::set<long> check_elements(const GmshMesh& mesh, double tol, std::string& what) {
   std::set<long> used;
   for (const std::array<long, 11>& e : mesh.elements) {
     std::array<Eigen::Vector3d, 10> p;
     for (int i = 0; i < 10; ++i) {
       const auto it = mesh.nodes.find(e[i + 1]);
-      if (it == mesh.nodes.end())
-        throw fail("element " + std::to_string(e[0]) + " uses missing node " +
-                   std::to_string(e[i + 1]));
+      if (it == mesh.nodes.end()) {
+        what = "element " + std::to_string(e[0]) + " uses missing node " + std::to_string(e[i + 1]);
+        return used;
+      }
       p[i] = it->second;
       used.insert(e[i + 1]);
     }
@@ -398,56 +381,42 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
     const Eigen::Vector3d b = p[2] - p[0];
     const Eigen::Vector3d c = p[3] - p[0];
     const double six_volume = a.cross(b).dot(c);
-    if (!(six_volume > 0.0))
-      throw fail("element " + std::to_string(e[0]) + " has a non-positive volume " +
-                 number(six_volume / 6.0) + " mm^3");
+    if (!(six_volume > 0.0)) {
+      what = "element " + std::to_string(e[0]) + " has a non-positive volume " +
+             number(six_volume / 6.0) + " mm^3";
+      return used;
+    }
     for (int k = 0; k < 6; ++k) {
       const Eigen::Vector3d mid = 0.5 * (p[c3d10_edges[k][0]] + p[c3d10_edges[k][1]]);
-      if ((p[4 + k] - mid).norm() > tol)
-        throw fail("element " + std::to_string(e[0]) + ": node " + std::to_string(k + 5) +
-                   " is not the midpoint of its C3D10 edge (node order not Abaqus')");
-    }
-  }
-
-  std::vector<long> root;
-  for (const long id : used)
-    if (std::abs(mesh.nodes.at(id).x() - spec.root_radius) <= tol) root.push_back(id);
-  if (root.size() < 3) throw fail("has fewer than 3 nodes on the root block's bottom face");
-
-  std::vector<long> tip;
-  const std::vector<Eigen::Vector3d> stations = gmsh_blade_tip_stations(spec);
-  for (int j = 0; j < n_tip_stations; ++j) {
-    long best = -1;
-    double best_distance = inf;
-    for (const long id : used) {
-      const double d = (mesh.nodes.at(id) - stations[j]).norm();
-      if (d < best_distance) {
-        best_distance = d;
-        best = id;
+      if ((p[4 + k] - mid).norm() > tol) {
+        what = "element " + std::to_string(e[0]) + ": node " + std::to_string(k + 5) +
+               " is not the midpoint of its C3D10 edge (node order not Abaqus')";
+        return used;
       }
     }
-    if (best_distance > 1e-6 * spec.thickness)
-      throw fail("has no node at tip station " + std::to_string(j) + " (nearest " +
-                 number(best_distance) + " mm away)");
-    tip.push_back(best);
   }
+  return used;
+}
 
-  const std::string partial = deck + ".partial"; // renamed when complete
-  std::ofstream out(partial);
+/// The deck: header comment, nodes, elements, node sets, material, section
+/// and clamping.
+void write_deck(std::ostream& out, const GmshBladeSpec& spec, const GmshMesh& mesh,
+                const std::set<long>& used, const std::vector<long>& root,
+                const std::vector<long>& tip) {
   out.imbue(std::locale::classic());
-  out << "** rsi gmsh_blade (reference/model/gmsh_blade.hpp): a twisted, cambered plate blade on "
-         "a\n"
-      << "** root block, meshed by gmsh (" << dir
-      << "/blade.geo). Units mm, t, s, N; z = rotation\n"
-      << "** axis, blade along +x. span " << number(spec.span) << ", chord " << number(spec.chord)
-      << ", thickness " << number(spec.thickness) << ", camber " << number(spec.camber)
-      << ",\n** twist " << number(spec.twist) << " deg, stagger " << number(spec.stagger)
-      << " deg, root block " << number(spec.root_length) << " x " << number(spec.root_width)
-      << " x " << number(spec.root_height) << " at radius " << number(spec.root_radius)
-      << ", element size " << number(spec.element_size) << ".\n"
+  // Comment lines stay short: ccx reads at most 132 characters a line.
+  out << "** rsi gmsh_blade (reference/model/gmsh_blade.hpp), meshed by gmsh from\n"
+      << "** blade.geo beside this deck. A twisted, cambered plate blade on a root block.\n"
+      << "** Units mm, t, s, N; z = rotation axis, blade along +x.\n"
+      << "** span " << number(spec.span) << ", chord " << number(spec.chord) << ", thickness "
+      << number(spec.thickness) << ", camber " << number(spec.camber) << ", twist "
+      << number(spec.twist) << " deg, stagger " << number(spec.stagger) << " deg\n"
+      << "** root block " << number(spec.root_length) << " x " << number(spec.root_width) << " x "
+      << number(spec.root_height) << " at radius " << number(spec.root_radius) << ", element size "
+      << number(spec.element_size) << "\n"
       << "** " << used.size() << " nodes, " << mesh.elements.size() << " C3D10, " << root.size()
-      << " clamped (NSET ROOT), " << tip.size()
-      << " contact nodes (NSET TIP). Model only: add a *STEP.\n"
+      << " clamped (NSET ROOT), " << tip.size() << " contact nodes (NSET TIP)\n"
+      << "** Model only: add a *STEP.\n"
       << "*NODE, NSET=NALL\n";
   for (const long id : used) {
     const Eigen::Vector3d& x = mesh.nodes.at(id);
@@ -466,8 +435,75 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
       << number(spec.density) << "\n"
       << "*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE_MATERIAL\n"
       << "*BOUNDARY\nROOT, 1, 3\n";
-  out.close();
-  if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + partial);
+}
+
+} // namespace
+
+std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const std::string geo_text = gmsh_blade_geo(spec); // checks the spec
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec)
+    throw std::runtime_error("write_gmsh_blade_deck: cannot create " + dir + ": " + ec.message());
+  const std::string geo = dir + "/blade.geo";
+  const std::string gmsh_mesh = dir + "/blade_gmsh.inp";
+  const std::string deck = dir + "/blade.inp";
+  fs::remove(gmsh_mesh, ec); // never read a previous run's files
+  fs::remove(deck, ec);
+  {
+    std::ofstream out(geo);
+    out << geo_text;
+    if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + geo);
+  }
+
+  const std::vector<std::string> command{"gmsh", "blade.geo",      "-3",      "-format", "inp",
+                                         "-o",   "blade_gmsh.inp", "-nopopup"};
+  const std::string where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
+  run_gmsh(command, dir, where);
+
+  const GmshMesh mesh = read_gmsh_inp(gmsh_mesh);
+  auto fail = [&](const std::string& what) {
+    return GmshError("write_gmsh_blade_deck: the mesh of '" + command_text(command) + "'" + where +
+                     " " + what);
+  };
+  if (mesh.elements.empty()) throw fail("has no C3D10 element");
+  const double extent = spec.root_radius + spec.root_height + spec.span + spec.root_length;
+  const double tol = 1e-9 * extent;
+  std::string problem;
+  const std::set<long> used = check_elements(mesh, tol, problem);
+  if (!problem.empty()) throw fail(problem);
+
+  std::vector<long> root; // the clamped face x = root_radius
+  for (const long id : used)
+    if (std::abs(mesh.nodes.at(id).x() - spec.root_radius) <= tol) root.push_back(id);
+  if (root.size() < 3) throw fail("has fewer than 3 nodes on the root block's bottom face");
+
+  std::vector<long> tip; // the node at each station
+  const std::vector<Eigen::Vector3d> stations = gmsh_blade_tip_stations(spec);
+  for (int j = 0; j < n_tip_stations; ++j) {
+    long best = -1;
+    double best_distance = inf;
+    for (const long id : used) {
+      const double d = (mesh.nodes.at(id) - stations[j]).norm();
+      if (d < best_distance) {
+        best_distance = d;
+        best = id;
+      }
+    }
+    if (best_distance > 1e-6 * spec.thickness)
+      throw fail("has no node at tip station " + std::to_string(j) + " (nearest " +
+                 number(best_distance) + " mm away)");
+    tip.push_back(best);
+  }
+
+  const std::string partial = deck + ".partial"; // renamed when complete
+  {
+    std::ofstream out(partial);
+    write_deck(out, spec, mesh, used, root, tip);
+    out.close();
+    if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + partial);
+  }
   fs::rename(partial, deck, ec);
   if (ec)
     throw std::runtime_error("write_gmsh_blade_deck: cannot rename " + partial + ": " +
