@@ -572,14 +572,15 @@ TEST(GmshBladeCcx, FirstFrequencyAgainstEulerBernoulli) {
               fe[3] / eb_flat, 100 * (fe[3] / fe[2] - 1));
   // Untwisted plates: a plate of aspect span / chord = 2.5 is stiffer than
   // the beam by at most 1 / sqrt(1 - nu^2) = 1.048 (plane strain across the
-  // chord); the mesh at h = 5 lies about 0.5 % above its limit (test 4):
-  // upper bound 1.048 x 1.01. The elastic root block (clamped 20 mm below
+  // chord); the mesh at h = 5 lies about 1 % above its limit (test 4: f1
+  // falls by 1.4 Hz from h = 5 to 2.5, and by about as much again below
+  // at order ~1): upper bound 1.048 x 1.02. The elastic root block (clamped 20 mm below
   // the blade root) lowers the frequency by an amount the beam model does
   // not know: 10 % allowed.
   const double plate = 1.0 / std::sqrt(1.0 - flat.poisson_ratio * flat.poisson_ratio);
-  EXPECT_LT(fe[0] / eb_flat, plate * 1.01);
+  EXPECT_LT(fe[0] / eb_flat, plate * 1.02);
   EXPECT_GT(fe[0] / eb_flat, 0.9);
-  EXPECT_LT(fe[2] / eb_cambered, plate * 1.01);
+  EXPECT_LT(fe[2] / eb_cambered, plate * 1.02);
   EXPECT_GT(fe[2] / eb_cambered, 0.9);
   // Twist couples flap and edge bending. No closed form here: the measured
   // effects (-0.2 % flat, -3.2 % cambered at 30 deg, gmsh 4.8.4) are
