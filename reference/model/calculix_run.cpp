@@ -1,16 +1,13 @@
 #include "calculix_run.hpp"
 
-#include <cerrno>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
+#include "child_process.hpp"
 #include "component.hpp"
 #include "coordinate_entries.hpp"
 
@@ -35,21 +32,9 @@ std::string hex(std::uint64_t h) {
 
 /// Runs `ccx -i job` in `dir` with its output in dir/ccx.log; the exit status.
 int run_ccx(const std::string& ccx, const fs::path& dir) {
-  const std::string log = (dir / "ccx.log").string();
-  const pid_t pid = fork();
-  if (pid < 0) throw ImportError("ccx: cannot start a process (fork failed)");
-  if (pid == 0) {
-    const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0 || chdir(dir.c_str()) != 0) _exit(127);
-    dup2(fd, 1);
-    dup2(fd, 2);
-    execl(ccx.c_str(), ccx.c_str(), "-i", "job", static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) throw ImportError("ccx: waitpid failed");
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  const ChildResult r = run_child({ccx, "-i", "job"}, dir.string(), (dir / "ccx.log").string());
+  if (!r.started) throw ImportError("ccx: cannot start " + ccx + ": " + r.error);
+  return r.signal ? 128 + r.signal : r.exit_status;
 }
 
 /// The lines of ccx's log that say what went wrong.
@@ -116,16 +101,11 @@ fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std
 } // namespace
 
 std::string find_ccx() {
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  std::string dir;
-  while (std::getline(dirs, dir, ':')) {
-    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "ccx";
-    if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
-  }
-  throw ImportError("ccx (CalculiX) not found on PATH: install Debian's calculix-ccx "
-                    "(./run-tests.sh does), or write the matrices yourself and name the folder "
-                    "as a matrix_market source");
+  if (!executable_on_path("ccx"))
+    throw ImportError("ccx (CalculiX) not found on PATH: install Debian's calculix-ccx "
+                      "(./run-tests.sh does), or write the matrices yourself and name them "
+                      "(calculix_matrices) or their Matrix Market folder as the source");
+  return "ccx";
 }
 
 std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir) {

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include <unistd.h>
 #include <filesystem>
 
 #include "calculix_deck.hpp"
@@ -56,6 +60,78 @@ int node_id(const ComponentNode& node) {
   return node.id;
 }
 
+/// The blade's parameters: every key optional, the coarse default otherwise
+/// (gmsh_blade.hpp); ranges checked by check_gmsh_blade_spec.
+GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
+  GmshBladeSpec spec;
+  const std::pair<const char*, double*> fields[] = {
+      {"span", &spec.span},
+      {"chord", &spec.chord},
+      {"thickness", &spec.thickness},
+      {"camber", &spec.camber},
+      {"twist_deg", &spec.twist},
+      {"stagger_deg", &spec.stagger},
+      {"root_length", &spec.root_length},
+      {"root_width", &spec.root_width},
+      {"root_height", &spec.root_height},
+      {"root_radius", &spec.root_radius},
+      {"element_size", &spec.element_size},
+      {"young_modulus", &spec.young_modulus},
+      {"poisson_ratio", &spec.poisson_ratio},
+      {"density", &spec.density}};
+  for (const auto& [key, value] : fields)
+    if (object.contains(key))
+      *value = r.number(key, {-inf, inf, true, true, "(see data/README.md)"});
+    else
+      r.claim(key);
+  r.finish();
+  try {
+    check_gmsh_blade_spec(spec);
+  } catch (const std::invalid_argument& e) {
+    // "GmshBladeSpec.FIELD: ..." -> the key of the case file.
+    std::string what = e.what();
+    const std::string prefix = "GmshBladeSpec.";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    const size_t colon = what.find(':');
+    std::string field = what.substr(0, colon);
+    if (field == "twist" || field == "stagger") field += "_deg";
+    r.fail(r.full(field), colon == std::string::npos ? what : what.substr(colon + 2));
+  }
+  return spec;
+}
+
+/// The deck of the gmsh blade, in CACHE/gmsh-blade-<hash of its script>/.
+std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_dir) {
+  const std::string geo = gmsh_blade_geo(spec);
+  std::uint64_t h = 14695981039346656037ull;
+  for (unsigned char ch : geo) {
+    h ^= ch;
+    h *= 1099511628211ull;
+  }
+  char name[40];
+  std::snprintf(name, sizeof name, "gmsh-blade-%016llx", static_cast<unsigned long long>(h));
+  const std::filesystem::path entry = std::filesystem::path(cache_dir) / name;
+  if (std::filesystem::exists(entry / "blade.inp")) return (entry / "blade.inp").string();
+  std::filesystem::path work = entry;
+  work += ".tmp" + std::to_string(::getpid());
+  std::error_code ec;
+  std::filesystem::remove_all(work, ec);
+  try {
+    write_gmsh_blade_deck(spec, work.string());
+  } catch (const GmshError& e) {
+    std::filesystem::remove_all(work, ec);
+    throw ImportError(std::string("component.source.gmsh_blade: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    std::filesystem::remove_all(work, ec);
+    throw ImportError(std::string("--ccx-cache: ") + e.what());
+  }
+  std::filesystem::rename(work, entry, ec);
+  if (ec && !std::filesystem::exists(entry / "blade.inp"))
+    throw ImportError("--ccx-cache: cannot rename " + work.string() + ": " + ec.message());
+  std::filesystem::remove_all(work, ec);
+  return (entry / "blade.inp").string();
+}
+
 } // namespace
 
 bool is_component_case(const json& document) {
@@ -78,18 +154,23 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   const bool deck = sj.is_object() && sj.contains("calculix_deck") &&
                     (sj.size() == 1 || (sj.size() == 2 && sj.contains("calculix_matrices")));
   const bool folder = sj.is_object() && sj.size() == 1 && sj.contains("matrix_market");
-  if (!deck && !folder)
+  const bool blade = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_blade");
+  if (!deck && !folder && !blade)
     comp.fail(comp.full("source"), "must be {\"calculix_deck\": file[, \"calculix_matrices\": "
-                                   "\"dir/JOB\"]} or {\"matrix_market\": folder}, got " +
+                                   "\"dir/JOB\"]}, {\"matrix_market\": folder} or "
+                                   "{\"gmsh_blade\": {parameters}}, got " +
                                        sj.dump().substr(0, 80));
   if (deck) {
     c.source = ComponentSource::calculix_deck;
     c.source_path = resolve(string_value(source, sj, "calculix_deck"), path);
     if (sj.contains("calculix_matrices"))
       c.calculix_matrices = resolve(string_value(source, sj, "calculix_matrices"), path);
-  } else {
+  } else if (folder) {
     c.source = ComponentSource::matrix_market;
     c.source_path = resolve(string_value(source, sj, "matrix_market"), path);
+  } else {
+    c.source = ComponentSource::gmsh_blade;
+    c.gmsh_blade = read_gmsh_blade(source.object("gmsh_blade"), sj.at("gmsh_blade"));
   }
   source.finish();
 
@@ -103,8 +184,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     if (bj.contains("nodes")) {
       c.boundary_nodes = integer_list(boundary, bj, "nodes", 1, 2147483647L);
     } else {
-      if (c.source != ComponentSource::calculix_deck)
-        boundary.fail(boundary.full("node_set"), "needs a calculix_deck source (an *NSET of it)");
+      if (c.source == ComponentSource::matrix_market)
+        boundary.fail(boundary.full("node_set"),
+                      "needs a calculix_deck or gmsh_blade source (an *NSET of its deck)");
       c.boundary_node_set = string_value(boundary, bj, "node_set");
       std::transform(c.boundary_node_set.begin(), c.boundary_node_set.end(),
                      c.boundary_node_set.begin(), [](unsigned char ch) { return std::toupper(ch); });
@@ -112,6 +194,8 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     boundary.finish();
   } else if (c.source == ComponentSource::matrix_market) {
     c.boundary_from_dofs = true;
+  } else if (c.source == ComponentSource::gmsh_blade) {
+    c.boundary_node_set = "TIP";
   } else {
     comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
   }
@@ -159,8 +243,7 @@ ComponentCase parse_component_case(const json& document, const std::string& path
 }
 
 Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
-  const std::string source = options.source_override.empty() ? c.source_path
-                                                             : options.source_override;
+  std::string source = options.source_override.empty() ? c.source_path : options.source_override;
   Component component;
   if (c.source == ComponentSource::matrix_market) {
     if (!std::filesystem::is_directory(source))
@@ -169,6 +252,8 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
     component = read_matrix_market_component(
         source, c.name, c.boundary_from_dofs ? nullptr : &c.boundary_nodes);
   } else {
+    if (c.source == ComponentSource::gmsh_blade && options.source_override.empty())
+      source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache);
     if (!std::filesystem::is_regular_file(source))
       throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
                         "' is not a file (the deck; --source overrides it)");

@@ -9,7 +9,9 @@
 //                  "source": {"calculix_deck": "../../../shared/external/rotor37/blade.inp"},
 //                  (optionally with "calculix_matrices": "dir/JOB", the prefix of
 //                   JOB.sti/.mas/.dof a ccx run of the deck wrote; or instead
-//                   {"matrix_market": "folder"})
+//                   {"matrix_market": "folder"}, or {"gmsh_blade": {parameters}}: the
+//                   project's blade (gmsh_blade.hpp), meshed by gmsh into the ccx cache,
+//                   boundary by default its node set TIP)
 //                  "boundary": {"nodes": [188, 190, ...]},
 //                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
 //    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
@@ -25,10 +27,11 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "component.hpp"
+#include "gmsh_blade.hpp"
 
 namespace rsi {
 
-enum class ComponentSource { calculix_deck, matrix_market };
+enum class ComponentSource { calculix_deck, matrix_market, gmsh_blade };
 
 struct ModalCampaign {
   std::vector<std::string> methods; ///< "cb", "ccm", "macneal"
@@ -47,6 +50,7 @@ struct ComponentCase {
   std::vector<int> boundary_nodes;         ///< explicit ids, or
   std::string boundary_node_set;           ///< an *NSET of the deck (upper case)
   bool boundary_from_dofs = false;         ///< matrix_market: dofs.csv's flags
+  GmshBladeSpec gmsh_blade;                ///< gmsh_blade: the blade's parameters
   std::string units;
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;
