@@ -1,0 +1,481 @@
+#include "block_shift_invert.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <cblas.h>
+#include <lapacke.h>
+
+#include "cholmod_shift_invert.hpp"
+
+namespace rsi {
+
+namespace {
+
+using Matrix = Eigen::MatrixXd;
+using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+using Clock = std::chrono::steady_clock;
+using Status = BlockShiftInvertResult::Status;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// c = alpha a^T b + beta c (BLAS dgemm; a: n x m, b: n x k, c: m x k).
+void gemm_tn(double alpha, const Eigen::Ref<const Matrix>& a, const Eigen::Ref<const Matrix>& b,
+             double beta, Eigen::Ref<Matrix> c) {
+  if (c.size() == 0) return;
+  if (a.rows() == 0) {
+    c *= beta;
+    return;
+  }
+  cblas_dgemm(CblasColMajor, CblasTrans, CblasNoTrans, static_cast<int>(a.cols()),
+              static_cast<int>(b.cols()), static_cast<int>(a.rows()), alpha, a.data(),
+              static_cast<int>(a.outerStride()), b.data(), static_cast<int>(b.outerStride()), beta,
+              c.data(), static_cast<int>(c.outerStride()));
+}
+
+/// c = alpha a b + beta c (BLAS dgemm; a: n x m, b: m x k, c: n x k).
+void gemm_nn(double alpha, const Eigen::Ref<const Matrix>& a, const Eigen::Ref<const Matrix>& b,
+             double beta, Eigen::Ref<Matrix> c) {
+  if (c.size() == 0) return;
+  if (a.cols() == 0) {
+    c *= beta;
+    return;
+  }
+  cblas_dgemm(CblasColMajor, CblasNoTrans, CblasNoTrans, static_cast<int>(a.rows()),
+              static_cast<int>(b.cols()), static_cast<int>(a.cols()), alpha, a.data(),
+              static_cast<int>(a.outerStride()), b.data(), static_cast<int>(b.outerStride()), beta,
+              c.data(), static_cast<int>(c.outerStride()));
+}
+
+/// y = A x for a symmetric A in full storage, so that column i of A is row
+/// i: row i of y gathers the rows of x that column names, each entry of A
+/// taken as coefficient(entry). x and y are copied to row-major (each gather
+/// reads contiguous rows of x); large products are split in two ranges of
+/// rows of equal nonzeros, one a thread.
+template <class Coefficient>
+void gather_product(const Eigen::SparseMatrix<double>& a, const Eigen::Ref<const Matrix>& x,
+                    Eigen::Ref<Matrix> y, Coefficient coefficient) {
+  const Eigen::Index n = a.rows();
+  const RowMatrix xr = x;
+  RowMatrix yr(n, x.cols());
+  const int* outer = a.outerIndexPtr();
+  const int* inner = a.innerIndexPtr();
+  const double* value = a.valuePtr();
+  auto rows = [&](Eigen::Index first, Eigen::Index last) {
+    for (Eigen::Index i = first; i < last; ++i) {
+      auto yi = yr.row(i);
+      yi.setZero();
+      for (int k = outer[i]; k < outer[i + 1]; ++k)
+        yi += coefficient(value[k]) * xr.row(inner[k]);
+    }
+  };
+  const double work = static_cast<double>(a.nonZeros()) * static_cast<double>(x.cols());
+  if (work < 2e7 || std::thread::hardware_concurrency() < 2) {
+    rows(0, n);
+  } else {
+    const Eigen::Index middle =
+        std::lower_bound(outer, outer + n, outer[n] / 2) - outer; // half the nonzeros
+    std::thread second(rows, middle, n);
+    rows(0, middle);
+    second.join();
+  }
+  y = yr;
+}
+
+/// y = A x, A symmetric in full storage (compressed).
+void symmetric_product(const Eigen::SparseMatrix<double>& a, const Eigen::Ref<const Matrix>& x,
+                       Eigen::Ref<Matrix> y) {
+  gather_product(a, x, y, [](double v) { return v; });
+}
+
+/// y = |A| |x|: the scale of the rounding errors of A x.
+void absolute_product(const Eigen::SparseMatrix<double>& a, const Eigen::Ref<const Matrix>& x,
+                      Eigen::Ref<Matrix> y) {
+  gather_product(a, x.cwiseAbs(), y, [](double v) { return std::abs(v); });
+}
+
+/// Uniform in [-1, 1), the same on every platform for a seed.
+Matrix random_block(Eigen::Index n, Eigen::Index k, std::uint64_t seed) {
+  std::mt19937_64 generator(seed);
+  Matrix x(n, k);
+  for (Eigen::Index i = 0; i < x.size(); ++i)
+    x.data()[i] = static_cast<double>(generator() >> 11) * 0x1.0p-52 - 1.0;
+  return x;
+}
+
+/// Symmetric eigendecomposition a = u diag(w) u^T, w ascending (LAPACKE dsyevd).
+bool symmetric_eigen(const Eigen::Ref<const Matrix>& a, Eigen::VectorXd& w, Matrix& u) {
+  const int n = static_cast<int>(a.rows());
+  u = 0.5 * (a + a.transpose());
+  w.resize(n);
+  if (n == 0) return true;
+  return LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n, u.data(), n, w.data()) == 0;
+}
+
+/// The new block from W (n x c), M-orthonormal and M-orthogonal to the basis v.
+struct NewBlock {
+  Matrix coefficients; ///< (v^T M) W before the projection (m x c)
+  Matrix r;            ///< W after the projection = Q r (kept x c)
+  Eigen::Index kept = 0;
+  bool ok = true;
+  std::string why;
+};
+
+// Columns shrunk below this by the projection are numerically in span(V):
+// dropped (a few hundred eps). Directions of the scaled Gram matrix below
+// drop_gram (singular value ratio 1e-7) are dependent within the block.
+constexpr double drop_column = 1e-13;
+constexpr double reproject_column = 1e-4;
+constexpr double drop_gram = 1e-14;
+
+/// M-orthogonalizes w against v (M-orthonormal, mv = M v) by block classical
+/// Gram-Schmidt twice (thrice if a column lost more than 1 - 1e-4 of its
+/// norm), then M-orthonormalizes it by SVQB twice; w and mw (= M w) hold the
+/// `kept` new columns on return.
+NewBlock orthonormalize(const Eigen::SparseMatrix<double>& mass, const Eigen::Ref<const Matrix>& v,
+                        const Eigen::Ref<const Matrix>& mv, Matrix& w, Matrix& mw,
+                        BlockShiftInvertResult::Seconds& seconds) {
+  const Eigen::Index c = w.cols();
+  NewBlock out;
+  auto start = Clock::now();
+  const Eigen::VectorXd before = w.colwise().norm();
+  out.coefficients = Matrix::Zero(v.cols(), c);
+  Matrix pass(v.cols(), c);
+  Eigen::VectorXd after = before;
+  for (int k = 0; k < 3 && v.cols() > 0; ++k) {
+    if (k == 2 && !((after.array() < reproject_column * before.array()).any())) break;
+    gemm_tn(1.0, mv, w, 0.0, pass);
+    gemm_nn(-1.0, v, pass, 1.0, w);
+    out.coefficients += pass;
+    after = w.colwise().norm();
+  }
+  std::vector<Eigen::Index> columns; // those not numerically in span(v)
+  for (Eigen::Index j = 0; j < c; ++j)
+    if (after(j) > drop_column * before(j)) columns.push_back(j);
+  Matrix projected(w.rows(), static_cast<Eigen::Index>(columns.size()));
+  for (size_t j = 0; j < columns.size(); ++j)
+    projected.col(static_cast<Eigen::Index>(j)) = w.col(columns[j]);
+  w.swap(projected);
+  seconds.orthogonalization += seconds_since(start);
+
+  start = Clock::now();
+  mw.resize(w.rows(), w.cols());
+  symmetric_product(mass, w, mw);
+  seconds.products += seconds_since(start);
+
+  start = Clock::now();
+  // w_projected(:, columns) = w r_total
+  Matrix r_total = Matrix::Identity(w.cols(), w.cols());
+  for (int k = 0; k < 2 && w.cols() > 0; ++k) {
+    Matrix gram(w.cols(), w.cols());
+    gemm_tn(1.0, w, mw, 0.0, gram);
+    const Eigen::VectorXd diagonal = gram.diagonal();
+    if (!(diagonal.array() > 0.0).all()) {
+      out.ok = false;
+      out.why = "a Krylov vector has M-norm^2 <= 0 (M not positive semi-definite)";
+      return out;
+    }
+    const Eigen::VectorXd scale = diagonal.cwiseSqrt().cwiseInverse();
+    const Matrix scaled = scale.asDiagonal() * gram * scale.asDiagonal();
+    Eigen::VectorXd s;
+    Matrix u;
+    if (!symmetric_eigen(scaled, s, u)) {
+      out.ok = false;
+      out.why = "LAPACKE_dsyevd failed on a block's Gram matrix";
+      return out;
+    }
+    // For a positive semi-definite M the eigenvalues are >= -(round-off).
+    if (s(0) < -1e-8 * s(s.size() - 1)) {
+      out.ok = false;
+      out.why = "a block's M-Gram matrix has eigenvalue " + std::to_string(s(0)) +
+                " (M not positive semi-definite)";
+      return out;
+    }
+    Eigen::Index first = 0;
+    while (first < s.size() && !(s(first) > drop_gram * s(s.size() - 1)))
+      ++first;
+    const Eigen::Index kept = s.size() - first;
+    const Eigen::VectorXd root = s.tail(kept).cwiseSqrt();
+    // w <- w f, f = D U_J S_J^-1/2; the part removed: r = S_J^1/2 U_J^T D^-1.
+    const Matrix f = scale.asDiagonal() * u.rightCols(kept) * root.cwiseInverse().asDiagonal();
+    const Matrix r =
+        root.asDiagonal() * u.rightCols(kept).transpose() * scale.cwiseInverse().asDiagonal();
+    Matrix next(w.rows(), kept);
+    gemm_nn(1.0, w, f, 0.0, next);
+    w.swap(next);
+    next.resize(mw.rows(), kept);
+    gemm_nn(1.0, mw, f, 0.0, next);
+    mw.swap(next);
+    r_total = (r * r_total).eval();
+  }
+  out.kept = w.cols();
+  out.r = Matrix::Zero(out.kept, c);
+  for (size_t j = 0; j < columns.size(); ++j)
+    out.r.col(columns[j]) = r_total.col(static_cast<Eigen::Index>(j));
+  seconds.orthogonalization += seconds_since(start);
+  return out;
+}
+
+} // namespace
+
+BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
+                                          const Eigen::SparseMatrix<double>& mass, int count,
+                                          const BlockShiftInvertOptions& options) {
+  const Eigen::Index n = stiffness.rows();
+  const int b = options.block_size;
+  const int kept = options.n_kept > 0 ? options.n_kept : count + b / 2;
+  const int max_basis = options.max_basis > 0 ? options.max_basis : kept + 2 * b;
+  if (stiffness.cols() != n || mass.rows() != n || mass.cols() != n)
+    throw std::invalid_argument("block_shift_invert: K and M must be square of the same size");
+  if (count < 1 || b < 1)
+    throw std::invalid_argument("block_shift_invert: count and block_size must be >= 1, got " +
+                                std::to_string(count) + " and " + std::to_string(b));
+  if (kept < count || max_basis < kept + b)
+    throw std::invalid_argument(
+        "block_shift_invert: need count <= n_kept <= max_basis - block_size, got " +
+        std::to_string(count) + ", " + std::to_string(kept) + ", " + std::to_string(max_basis));
+  if (max_basis + b > n)
+    throw std::invalid_argument(
+        "block_shift_invert: max_basis + block_size = " + std::to_string(max_basis + b) +
+        " must not exceed n = " + std::to_string(n));
+  if (!(options.tolerance > 0.0 && options.tolerance < 1.0) || options.max_restarts < 0)
+    throw std::invalid_argument(
+        "block_shift_invert: tolerance must be in (0, 1) and max_restarts >= 0");
+
+  BlockShiftInvertResult result;
+  auto start = Clock::now();
+  CholmodShiftInvert op(stiffness, mass, options.factorization);
+  op.set_shift(0.0);
+  result.seconds.factorization = seconds_since(start);
+  if (!op.factorized()) {
+    result.status = op.info() == CholmodFactor::Status::not_positive_definite
+                        ? Status::stiffness_not_positive_definite
+                        : Status::failed;
+    result.message = "the stiffness matrix is " + op.message();
+    return result;
+  }
+  // Compressed copies for the products: M without its explicit zeros, K as is.
+  Eigen::SparseMatrix<double> k_compressed;
+  if (!stiffness.isCompressed()) {
+    k_compressed = stiffness;
+    k_compressed.makeCompressed();
+  }
+  const Eigen::SparseMatrix<double>& k = stiffness.isCompressed() ? stiffness : k_compressed;
+  Eigen::SparseMatrix<double> m = mass;
+  m.prune([](Eigen::Index, Eigen::Index, double value) { return value != 0.0; });
+  // The rounding of K phi, which dominates that of the residual: about
+  // sqrt(p) eps (|K| |phi|)_i for rows of p terms (Higham and Mary 2019,
+  // probabilistic bound of inner products), p the longest row of K.
+  Eigen::Index longest_row = 0;
+  for (Eigen::Index j = 0; j < n; ++j)
+    longest_row =
+        std::max<Eigen::Index>(longest_row, k.outerIndexPtr()[j + 1] - k.outerIndexPtr()[j]);
+  const double rounding =
+      std::sqrt(static_cast<double>(longest_row)) * std::numeric_limits<double>::epsilon();
+
+  const Eigen::Index capacity = max_basis + b;
+  Matrix v(n, capacity), mv(n, capacity);
+  Matrix h = Matrix::Zero(capacity, capacity);
+  Eigen::Index basis = 0; // Krylov-Schur basis V(:, 0:basis)
+  Eigen::Index next = 0;  // width of the next block Q_next = V(:, basis:basis+next)
+
+  // One block solve W = T X = K^-1 (M X); false (and result's status) on failure.
+  Matrix w, mw, rhs;
+  auto apply_t = [&](const Eigen::Ref<const Matrix>& m_x) {
+    const auto t0 = Clock::now();
+    w.resize(n, m_x.cols());
+    const bool ok = op.solve(m_x, w);
+    result.seconds.solves += seconds_since(t0);
+    ++result.n_block_solves;
+    if (!ok) {
+      result.status = Status::failed;
+      result.message = "the CHOLMOD solve failed";
+    }
+    return ok;
+  };
+  // Appends the new block made from w to V(:, basis:), coefficients against V(:, 0:basis).
+  auto append = [&](NewBlock& block) {
+    if (!block.ok) {
+      result.status = Status::mass_not_semidefinite;
+      result.message = block.why;
+      return false;
+    }
+    v.middleCols(basis, block.kept) = w;
+    mv.middleCols(basis, block.kept) = mw;
+    next = block.kept;
+    return true;
+  };
+
+  {
+    const Matrix x = random_block(n, b, options.seed);
+    rhs.resize(n, b);
+    symmetric_product(m, x, rhs);
+    if (!apply_t(rhs)) return result;
+    NewBlock first = orthonormalize(m, v.leftCols(0), mv.leftCols(0), w, mw, result.seconds);
+    if (!append(first)) return result;
+  }
+
+  Eigen::VectorXd theta;
+  Matrix s;
+  // The true residual runs about lambda_eff / lambda times the estimate
+  // (the next block holds stiffer directions): after a check, a mode is
+  // checked again once its estimate fell by the factor it missed by.
+  Eigen::VectorXd trigger = Eigen::VectorXd::Constant(count, options.tolerance);
+  while (true) {
+    // T Q_next = V c + Q_new r: Q_next joins the basis, Q_new is the next block.
+    const Eigen::Index width = next;
+    if (width == 0) break; // the space is invariant: the last Rayleigh-Ritz is exact
+    if (!apply_t(mv.middleCols(basis, width))) return result;
+    const Eigen::Index joined = basis + width;
+    NewBlock block =
+        orthonormalize(m, v.leftCols(joined), mv.leftCols(joined), w, mw, result.seconds);
+    {
+      const Eigen::Index old_basis = basis;
+      basis = joined;
+      if (!append(block)) return result;
+      h.block(0, old_basis, joined, width) = block.coefficients;
+      h.block(joined, 0, capacity - joined, capacity).setZero();
+      h.block(joined, old_basis, next, width) = block.r;
+    }
+
+    if (basis < count) continue;
+    auto t0 = Clock::now();
+    if (!symmetric_eigen(h.topLeftCorner(basis, basis), theta, s)) {
+      result.status = Status::failed;
+      result.message = "LAPACKE_dsyevd failed on the Rayleigh-Ritz matrix";
+      return result;
+    }
+    // Ritz residual estimates |T phi - theta phi|_M = |B s_i|, the wanted ones
+    // are the `count` largest theta (last columns of s).
+    const Matrix coupling = h.block(basis, 0, next, basis);
+    const Matrix wanted_s = s.rightCols(count).rowwise().reverse();
+    const Eigen::VectorXd wanted_theta = theta.tail(count).reverse();
+    const Eigen::VectorXd estimates =
+        (coupling * wanted_s).colwise().norm().transpose().cwiseQuotient(wanted_theta.cwiseAbs());
+    result.seconds.rayleigh_ritz += seconds_since(t0);
+    result.basis_size = static_cast<int>(basis);
+
+    if ((estimates.array() <= trigger.array()).all() || next == 0) {
+      t0 = Clock::now();
+      Matrix phi(n, count), m_phi(n, count), k_phi(n, count);
+      gemm_nn(1.0, v.leftCols(basis), wanted_s, 0.0, phi);
+      gemm_nn(1.0, mv.leftCols(basis), wanted_s, 0.0, m_phi);
+      result.seconds.rayleigh_ritz += seconds_since(t0);
+      t0 = Clock::now();
+      symmetric_product(k, phi, k_phi);
+      result.seconds.products += seconds_since(t0);
+      Eigen::VectorXd lambda(count), residual(count), floor = Eigen::VectorXd::Zero(count),
+                                                      norm(count), scale(count);
+      std::vector<Eigen::Index> above; // residual above the tolerance: rounding?
+      for (int i = 0; i < count; ++i) {
+        norm(i) = phi.col(i).dot(m_phi.col(i));
+        lambda(i) = phi.col(i).dot(k_phi.col(i)) / norm(i);
+        scale(i) = k_phi.col(i).norm();
+        residual(i) = (k_phi.col(i) - lambda(i) * m_phi.col(i)).norm() / scale(i);
+        if (residual(i) > options.tolerance) above.push_back(i);
+      }
+      if (!above.empty()) {
+        t0 = Clock::now();
+        Matrix x(n, static_cast<Eigen::Index>(above.size())), bound(n, x.cols());
+        for (size_t j = 0; j < above.size(); ++j)
+          x.col(static_cast<Eigen::Index>(j)) = phi.col(above[j]);
+        absolute_product(k, x, bound);
+        for (size_t j = 0; j < above.size(); ++j)
+          floor(above[j]) =
+              rounding * bound.col(static_cast<Eigen::Index>(j)).norm() / scale(above[j]);
+        result.seconds.products += seconds_since(t0);
+      }
+      bool converged = true;
+      for (int i = 0; i < count; ++i) {
+        const bool passed = residual(i) <= options.tolerance + floor(i);
+        if (!passed) trigger(i) = estimates(i) * (options.tolerance + floor(i)) / residual(i);
+        converged = converged && passed;
+      }
+      if (std::getenv("RSI_DEBUG_BKS")) {
+        Eigen::Index worst;
+        residual.maxCoeff(&worst);
+        std::fprintf(stderr,
+                     "check: basis %ld blocks %d est max %.3e true max %.3e at %ld (est there "
+                     "%.3e, floor %.3e) conv %d\n",
+                     (long)basis, result.n_block_solves, estimates.maxCoeff(), residual.maxCoeff(),
+                     (long)worst, estimates(worst), floor(worst), (int)converged);
+        for (int i = 0; i < count; i += 7)
+          std::fprintf(stderr, "  %d: est %.2e true %.2e lambda %.10e\n", i, estimates(i),
+                       residual(i), lambda(i));
+      }
+      if (converged) {
+        std::vector<int> order(count);
+        for (int i = 0; i < count; ++i)
+          order[i] = i;
+        std::stable_sort(order.begin(), order.end(),
+                         [&](int a, int c) { return lambda(a) < lambda(c); });
+        result.eigenvalues.resize(count);
+        result.residuals.resize(count);
+        result.residual_floors.resize(count);
+        result.eigenvectors.resize(n, count);
+        for (int i = 0; i < count; ++i) {
+          result.eigenvalues(i) = lambda(order[i]);
+          result.residuals(i) = residual(order[i]);
+          result.residual_floors(i) = floor(order[i]);
+          result.eigenvectors.col(i) = phi.col(order[i]) / std::sqrt(norm(order[i]));
+        }
+        result.n_solves = op.n_solves();
+        result.status = Status::successful;
+        return result;
+      }
+      if (next == 0) {
+        result.status = Status::not_converged;
+        result.message = "the Krylov space became invariant before the residuals converged";
+        result.n_solves = op.n_solves();
+        return result;
+      }
+    }
+
+    if (basis + next <= max_basis) continue;
+    // Thick restart: keep the `kept` Ritz vectors of largest theta,
+    // T Y = Y Theta + Q_next (B S_kept).
+    if (result.n_restarts == options.max_restarts) {
+      result.status = Status::not_converged;
+      result.message = "no convergence after " + std::to_string(options.max_restarts) +
+                       " restarts (largest residual estimate " +
+                       std::to_string(estimates.maxCoeff()) + ")";
+      result.n_solves = op.n_solves();
+      return result;
+    }
+    ++result.n_restarts;
+    t0 = Clock::now();
+    const Matrix kept_s = s.rightCols(kept).rowwise().reverse();
+    Matrix y(n, kept);
+    gemm_nn(1.0, v.leftCols(basis), kept_s, 0.0, y);
+    Matrix my(n, kept);
+    gemm_nn(1.0, mv.leftCols(basis), kept_s, 0.0, my);
+    const Matrix q_next = v.middleCols(basis, next);
+    const Matrix mq_next = mv.middleCols(basis, next);
+    v.leftCols(kept) = y;
+    mv.leftCols(kept) = my;
+    v.middleCols(kept, next) = q_next;
+    mv.middleCols(kept, next) = mq_next;
+    h.setZero();
+    h.topLeftCorner(kept, kept).diagonal() = theta.tail(kept).reverse();
+    h.block(kept, 0, next, kept) = coupling * kept_s;
+    basis = kept;
+    result.seconds.rayleigh_ritz += seconds_since(t0);
+  }
+  result.status = Status::not_converged;
+  result.message = "the Krylov space became invariant with fewer than count vectors";
+  result.n_solves = op.n_solves();
+  return result;
+}
+
+} // namespace rsi

@@ -1,0 +1,97 @@
+#pragma once
+// The lowest eigenpairs of K phi = lambda M phi by a block Krylov method on
+// the shift-invert operator T = K^-1 M (shift 0): block Krylov-Schur.
+//
+// Method. T is self-adjoint in the M inner product and its eigenvalues are
+// theta = 1/lambda, so the lowest lambda are the largest theta. The basis V
+// of a block Krylov space of T is kept M-orthonormal; each step solves
+// K W = M Q for the newest block Q of b vectors at once (one CHOLMOD
+// supernodal solve with b right-hand sides: BLAS-3, about 7 times cheaper a
+// vector than b single solves on Rotor 37, bench/RESULTS.md), M-orthogonalizes
+// W against V twice (block classical Gram-Schmidt, BLAS-3) and then within
+// itself (SVQB twice: the eigendecomposition of the column-scaled M-Gram
+// matrix, which keeps the relation W = Q R exact and drops numerically
+// dependent directions). The projection coefficients are the entries of
+// H = V^T M T V, so T V = V H + Q_next B holds with the next block Q_next
+// and its coupling B. Rayleigh-Ritz: H = S Theta S^T (LAPACKE dsyevd; the
+// projected pencil is (H, I) because V^T M V = I to round-off), Ritz vectors
+// V S. When the basis holds max_basis vectors, it restarts thick
+// (Krylov-Schur): it keeps the n_kept Ritz vectors of largest theta, whose
+// relation T Y = Y Theta + Q_next (B S) stays exact, so no Krylov
+// information is thrown away but the rest.
+//
+// Convergence. After every step with at least `count` Ritz vectors, the
+// estimate |B s_i| / theta_i (the Ritz residual of T, relative) is compared
+// with the tolerance; when every wanted one passes, the true residuals
+// |K phi - lambda M phi| / |K phi| of the wanted Ritz vectors are computed
+// (one product K Phi), with lambda their Rayleigh quotients
+// phi^T K phi / phi^T M phi, and the method stops when all are below the
+// tolerance. A residual r bounds the relative eigenvalue error by about
+// |r|^2 / relative gap (symmetric pencils), so tolerance 1e-9 gives
+// eigenvalues far below 1e-8 unless two are closer than 1e-10 relative.
+//
+// The first block is T X with X random (fixed seed: reproducible), so every
+// basis vector is in the range of T: M may be singular (positive
+// semi-definite; its null space holds the infinite eigenvalues, never
+// wanted). K must be symmetric positive definite (a supported part),
+// M symmetric positive semi-definite; full (symmetric) storage.
+//
+// Errors: bad arguments throw std::invalid_argument("block_shift_invert:
+// ..."); numerical failure (K not positive definite, M not positive
+// semi-definite on the Krylov space, no convergence in max_cycles restarts)
+// is the result's status with a message.
+
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "cholmod_factor.hpp"
+
+namespace rsi {
+
+struct BlockShiftInvertOptions {
+  int block_size = 64; ///< b, vectors a block solve: 1 <= b
+  int max_basis =
+      0; ///< largest basis before a restart, n_kept + b <= max_basis <= n - b; 0: n_kept + 2 b
+  int n_kept = 0;          ///< Ritz vectors kept at a restart, count <= n_kept; 0: count + b / 2
+  int max_restarts = 50;   ///< restarts before giving up, >= 0
+  double tolerance = 1e-9; ///< on |K phi - lambda M phi| / |K phi|, in (0, 1)
+  std::uint64_t seed = 20261123; ///< of the random first block
+  CholmodFactor::Method factorization = CholmodFactor::Method::supernodal;
+};
+
+struct BlockShiftInvertResult {
+  enum class Status {
+    successful,
+    stiffness_not_positive_definite,
+    mass_not_semidefinite,
+    not_converged,
+    failed
+  };
+  Status status = Status::failed;
+  std::string message;             ///< why not successful
+  Eigen::VectorXd eigenvalues;     ///< count lambda, ascending
+  Eigen::MatrixXd eigenvectors;    ///< n x count, M-orthonormal
+  Eigen::VectorXd residuals;       ///< |K phi - lambda M phi| / |K phi| of each
+  Eigen::VectorXd residual_floors; ///< sqrt(p) eps | |K| |phi| | / |K phi|: its rounding level
+  long n_solves = 0;               ///< right-hand sides solved (a block of b counts b)
+  int n_block_solves = 0;          ///< block solves
+  int n_restarts = 0;
+  int basis_size = 0; ///< of the last Rayleigh-Ritz
+  struct Seconds {
+    double factorization = 0.0; ///< analysis and numeric factorization of K
+    double solves = 0.0;        ///< block solves
+    double products = 0.0;      ///< sparse M W and K Phi
+    double orthogonalization = 0.0;
+    double rayleigh_ritz = 0.0; ///< eigendecompositions of H, Ritz vectors, restarts
+  } seconds;
+};
+
+/// The `count` lowest eigenpairs (1 <= count; the basis must fit: max_basis + b <= n).
+BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
+                                          const Eigen::SparseMatrix<double>& mass, int count,
+                                          const BlockShiftInvertOptions& options = {});
+
+} // namespace rsi
