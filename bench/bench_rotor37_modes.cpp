@@ -2,7 +2,8 @@
 // (CalculiX model, 61,098 dofs, K with 7.1 M nonzeros), and their parts:
 //  - CHOLMOD's analysis and factorization of K, supernodal and simplicial;
 //  - CHOLMOD's factorization of M (what lowest_modes pays for omega_max);
-//  - Spectra's shift-invert Lanczos on the CHOLMOD factor (CholmodShiftInvert), for several ncv;
+//  - Spectra's shift-invert Lanczos on Eigen's SparseLU (the sparse path before this round) and on
+//    the CHOLMOD factor (CholmodShiftInvert), for several ncv;
 //  - the block Krylov-Schur method (block_shift_invert), for several block sizes and bases;
 //  - lowest_modes (the project's entry point: the block method and omega_max).
 // Counters: right-hand sides solved, the method's own split of the time, and
@@ -38,6 +39,7 @@
 #include <vector>
 
 #include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/MatOp/SymShiftInvert.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 
 #include "block_shift_invert.hpp"
@@ -221,6 +223,31 @@ BENCHMARK(spectra_cholmod)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->UseRealTime();
+
+/// What lowest_modes did before this round: Spectra's shift-invert Lanczos
+/// on Spectra's SymShiftInvert (Eigen's SparseLU of K), ncv 101 as
+/// lowest_modes chose it for 50 modes. About a minute: run it alone.
+void spectra_sparselu(benchmark::State& state) {
+  const Rotor37* r = model_or_skip(state);
+  if (!r) return;
+  using ShiftInvert = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
+  for (auto _ : state) {
+    ShiftInvert op(r->k, r->m);
+    Spectra::SparseSymMatProd<double> bop(r->m);
+    Spectra::SymGEigsShiftSolver<ShiftInvert, Spectra::SparseSymMatProd<double>,
+                                 Spectra::GEigsMode::ShiftInvert>
+        solver(op, bop, wanted, 2 * wanted + 1, 0.0);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-12);
+    if (solver.info() != Spectra::CompInfo::Successful) {
+      state.SkipWithError("Spectra did not converge");
+      return;
+    }
+    state.counters["solves"] = static_cast<double>(solver.num_operations());
+  }
+  state.counters["peak_MB"] = peak_megabytes();
+}
+BENCHMARK(spectra_sparselu)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 /// block_shift_invert with block size range(0), n_kept = 50 + range(1),
 /// max_basis = range(2); tolerance 1e-9 (the default).
