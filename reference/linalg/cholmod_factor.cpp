@@ -53,7 +53,7 @@ CholmodFactor::CholmodFactor(Method method)
     : m_cholmod(std::make_unique<Cholmod>())
     , m_method(method) {
   cholmod_start(&m_cholmod->common);
-  m_cholmod->common.print = 1; // errors only: not-positive-definite is our status
+  m_cholmod->common.print = 0; // silent: the status and message() carry the failures
   m_cholmod->common.supernodal =
       method == Method::supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
   m_cholmod->common.final_ll = 1; // L L^T for both methods

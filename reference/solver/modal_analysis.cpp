@@ -106,8 +106,7 @@ constexpr int block_method_min_dofs = 10000;
 /// bench/RESULTS.md), or block_size 0 if its basis would take more than
 /// half the space.
 BlockShiftInvertOptions block_options(int count, int n) {
-  BlockShiftInvertOptions options;
-  options.block_size = 24;
+  BlockShiftInvertOptions options; // block size 24
   options.n_kept = count + options.block_size / 2;
   options.max_basis = options.n_kept + 10 * options.block_size;
   if (2 * (options.max_basis + options.block_size) > n) options.block_size = 0;

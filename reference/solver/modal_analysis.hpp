@@ -2,12 +2,26 @@
 // Undamped modal analysis K phi = omega^2 M phi of an assembled part.
 //
 // Dense path: LAPACKE dsygvd (symmetric-definite generalized problem, all
-// eigenpairs). Sparse path, for models too large for dense matrices:
-// Spectra's Lanczos solvers, shift-invert about sigma = 0 for the lowest
-// modes (needs K nonsingular: a supported part) and Cholesky mode for
-// omega_max. Assumes K symmetric, M symmetric positive definite. A failure
-// (M not positive definite, K singular, no convergence) is reported as
-// ModalError, never ignored. Eigenvectors are mass-normalised:
+// eigenpairs). Sparse path, for models too large for dense matrices, the
+// lowest modes by shift-invert about sigma = 0 (needs K nonsingular: a
+// supported part):
+//  - under 10,000 dofs, Spectra's Lanczos on Eigen's SparseLU of K, as
+//    before: the campaign's stored thresholds were measured with it and its
+//    CB runs take one vector of pairs of equal eigenvalues, which depends on
+//    the solver's round-off (modal_analysis.cpp);
+//  - from 10,000 dofs, the block Krylov-Schur method on CHOLMOD's
+//    supernodal factor of K (block_shift_invert; Rotor 37's 50 modes in
+//    seconds, bench/RESULTS.md), or Spectra's Lanczos on that factor
+//    (cholmod_shift_invert) when the block basis would fill half the space.
+// omega_max: Spectra's Lanczos in Cholesky mode on CHOLMOD's L L^T of M.
+// Assumes K symmetric, M symmetric positive semi-definite. A failure (K
+// singular, M not positive semi-definite, no convergence) is reported as
+// ModalError, never ignored; so is an M that is not positive definite in
+// the dense path and in max_angular_frequency (no finite omega_max). The
+// sparse path needs M only positive semi-definite (massless directions are
+// infinite eigenvalues, never among the lowest) and then sets omega_max to
+// +infinity: CalculiX's C3D10 mass of Rotor 37 is singular (about 100
+// directions with M phi = 0 to 1e-15). Eigenvectors are mass-normalised:
 // Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
 
 #include <stdexcept>
@@ -25,7 +39,7 @@ public:
 struct Modes {
   Eigen::VectorXd omega_squared; ///< ascending [rad^2/s^2]
   Eigen::MatrixXd shapes;        ///< columns mass-normalised
-  double omega_max = 0.0;        ///< largest omega of the whole model [rad/s]
+  double omega_max = 0.0;        ///< largest omega of the whole model [rad/s]; +inf for a singular M
 
   int n_modes() const { return static_cast<int>(omega_squared.size()); }
   double frequency_hz(int i) const;
@@ -43,8 +57,9 @@ enum class ModalSolver {
 /// of K and M: 2 n^2 doubles, 64 MB at this size).
 constexpr int dense_limit = 2000;
 
-/// omega_max [rad/s] alone, by Lanczos (Spectra, Cholesky mode): cheap for
-/// any size, for the stability limit of explicit integration.
+/// omega_max [rad/s] alone, by Lanczos (Spectra, Cholesky mode on CHOLMOD's
+/// factor of M): cheap for any size, for the stability limit of explicit
+/// integration. ModalError if M is not positive definite.
 double max_angular_frequency(const Eigen::SparseMatrix<double>& stiffness,
                              const Eigen::SparseMatrix<double>& mass);
 
