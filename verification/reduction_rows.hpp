@@ -14,7 +14,8 @@
 // factorization of K (reduced/ solves K_II or K against other right-hand
 // sides and refines them), cond(K) and the extreme eigenvalues come from
 // Lanczos on K and on K^-1, the reduced eigenvalues from Eigen's dense
-// generalized solver with eigenvectors (for their bounds).
+// generalized solver with eigenvectors (for their bounds; LAPACK's dsygvd
+// for the complete basis, r = n).
 //
 // Bounds (first order in eps, worst case, the convention of
 // test_reduction_bases), n the order of the matrices involved:
@@ -97,6 +98,28 @@ private:
   mutable double m_cond_k = 0.0;
   mutable double m_lambda_max = 0.0;
 };
+
+// ------------------------------------------------- precondition: M > 0
+
+/// M positive definite to working precision: the assumption of every row
+/// that computes modes (lowest_modes' sparse path factors M for omega_max,
+/// Component::lambda_max likewise). The lowest eigenvalues of M by Lanczos
+/// on (M + c I)^-1, c = sqrt(eps) lambda_max(M) (CHOLMOD factor of the
+/// shifted matrix, positive definite for any M >= 0): lambda = 1/mu - c.
+/// A backward-stable factor resolves the eigenvalues of M only to about
+/// n eps lambda_max(M) (absolute): an eigenvalue below that is zero to
+/// working precision and M is singular (a mass matrix integrated with too
+/// few points, a node without mass).
+struct MassRow {
+  bool cholesky = false;   ///< CHOLMOD's supernodal LL^T of M succeeded
+  double lambda_max = 0.0; ///< lambda_max(M), Lanczos
+  double floor = 0.0;      ///< n eps lambda_max(M): the resolution
+  Eigen::VectorXd lowest;  ///< the `count` lowest eigenvalues of M, ascending
+  int n_below_floor = 0;   ///< how many of them are below the floor
+};
+/// `count` = 0: CHOLMOD's attempt and lambda_max(M) only (a few seconds on
+/// 61,098 dofs; the shifted Lanczos takes ten more).
+MassRow mass_definiteness(const Component& c, int count);
 
 // ------------------------------------------------------------- V3: modes
 
@@ -236,6 +259,38 @@ struct RitzRow {
 std::vector<RitzRow> rayleigh_ritz(const Component& c,
                                    const std::vector<const ReducedBasis*>& nested,
                                    const Modes& full, bool full_by_lanczos, int lowest);
+
+// ------------------------------------------ V4: a complete basis = full
+
+/// A basis spanning the whole space (Craig-Bampton with every
+/// fixed-interface mode: r = n, T square and nonsingular): (K^, M^) =
+/// T^T (K, M) T is congruent to (K, M), so its eigenvalues are the full ones
+/// exactly, whatever the accuracy of the modes inside T; only the rounding
+/// of K^, M^ and of the two dense solves separates them. Dense n x n:
+/// for components of a few thousand dofs.
+struct CompleteRow {
+  int n_reduced = 0;
+  /// |lambda_i(red) - lambda_i(full)| / lambda_i(full), every i; bound per
+  /// i: the reduced eigenvalue's (forming K^ and M^: n eps ((|T||x_i|)^T |K|
+  /// (|T||x_i|) + lambda_i (|T||x_i|)^T |M| (|T||x_i|)), and the dense solve
+  /// of the pencil scaled by powers of two D (D M^ D with a unit-order
+  /// diagonal): r eps (||D K^ D|| + lambda_i ||D M^ D||) ||D^-1 x_i||^2, x_i
+  /// M^-normalised) + the full one (eigenvalue_bounds, dsygvd). The dense
+  /// solve's term is about r eps lambda_max for every i: the lowest
+  /// eigenvalues are bounded only to r eps lambda_max / lambda_i (relative),
+  /// the absolute accuracy of any backward-stable dense solver.
+  Measure eigenvalues;
+  double lowest_error = 0.0;   ///< the same error over the lowest `lowest` (information)
+  double lowest_bound = 0.0;   ///< the largest relative bound over the lowest `lowest`
+  double omega_max = 0.0;      ///< reduced omega_max [rad/s], from this solve
+  double omega_max_full = 0.0; ///< the full dense omega_max [rad/s]
+  double seconds = 0.0;        ///< the dense reduced solve and the bounds
+};
+/// `full_dense`: every mode of (K, M) (lowest_modes, ModalSolver::dense,
+/// count n); the reduced eigenpairs by LAPACK's dsygvd (Eigen's dense
+/// solver takes minutes at r = 4,000).
+CompleteRow complete_basis_row(const Component& c, const ReducedBasis& basis,
+                               const Modes& full_dense, int lowest);
 
 // ------------------------------------------------------------- MacNeal
 
