@@ -2,6 +2,7 @@
 // where the component has a cyclic structure.
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -56,9 +57,13 @@ int run_modes(const ModesOptions& options, OutputDirectories& directories) {
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::printf("%s: %s, %d dofs (%s)\n", input.case_source.c_str(), input.component.name.c_str(),
               n, input.component.units.c_str());
-  std::printf("omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = "
-              "%.6e s",
-              modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step());
+  if (std::isfinite(modes.omega_max))
+    std::printf("omega_max = %.6e rad/s (%.1f Hz), critical central-difference step 2/omega_max = "
+                "%.6e s",
+                modes.omega_max, modes.omega_max / (2.0 * M_PI), modes.critical_time_step());
+  else
+    std::printf("omega_max = inf: M is singular (massless directions, infinite eigenvalues); "
+                "central differences cannot integrate the full model");
   if (input.case_time_step > 0.0) std::printf(" (case step %.3e s)", input.case_time_step);
   std::printf("\nload %.2f s, %d modes %.2f s, peak memory %.0f MB\n", seconds(start, loaded),
               modes.n_modes(), seconds(loaded, solved), peak_memory_bytes() / 1048576.0);

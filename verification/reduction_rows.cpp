@@ -523,8 +523,14 @@ std::vector<RitzRow> rayleigh_ritz(const Component& c,
       row.below.ratio = std::max(row.below.ratio, shortfall / (red.bound(i) + full_bound(i)));
       if (i < lows) row.lowest_error = std::max(row.lowest_error, std::abs(shortfall) / w2);
     }
+    // A singular M (Rotor 37's: massless directions) makes lambda_max(full)
+    // infinite: every finite reduced eigenvalue lies below it, the row holds
+    // trivially (ratio 0, error -1: "below by all of it").
     const double excess = red.values(r - 1) - lambda_max;
-    row.top = {excess / lambda_max, excess / (red.bound(r - 1) + lanczos_tol * lambda_max)};
+    row.top = std::isfinite(lambda_max)
+                  ? Measure{excess / lambda_max,
+                            excess / (red.bound(r - 1) + lanczos_tol * lambda_max)}
+                  : Measure{-1.0, 0.0};
     if (previous.size() > 0) {
       row.rise = {lowest_double, lowest_double};
       for (int i = 0; i < std::min<int>(lows, static_cast<int>(previous.size())); ++i) {

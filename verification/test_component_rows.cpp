@@ -171,10 +171,9 @@ std::unique_ptr<Loaded> load(const Plan& plan) {
   std::printf("  M: CHOLMOD %s, lambda_max(M) = %.4e; %.2f s\n",
               mass.cholesky ? "factorizes it" : "FAILS (not positive definite)", mass.lambda_max,
               seconds_since(start));
-  if (!mass.cholesky)
-    l->no_modes = "CHOLMOD cannot factor M (MassPositiveDefinite prints its lowest "
-                  "eigenvalues): lowest_modes factors M for omega_max, so no modes and no "
-                  "CB/CCM/MacNeal basis with modes";
+  // A singular M (Rotor 37) is no obstacle: its null directions are
+  // infinite eigenvalues, never among the lowest (modal_analysis.hpp), and
+  // the full omega_max is then infinite.
   l->n_full = plan.n_full;
   return l;
 }
@@ -233,7 +232,7 @@ void expect_mode_row(const rows::ModeRow& r) {
 
 // ------------------------------------------------------- the rows
 
-void mass_positive_definite(const Loaded& l) {
+void mass_positive_definite(const Loaded& l, bool definite) {
   const Clock::time_point start = Clock::now();
   const rows::MassRow m = rows::mass_definiteness(*l.c, 6);
   std::printf("M: CHOLMOD %s; lambda_max(M) = %.4e, floor n eps lambda_max = %.3e; lowest "
@@ -246,8 +245,14 @@ void mass_positive_definite(const Loaded& l) {
               "%.2f s\n",
               m.n_below_floor, m.lowest(0) / m.lambda_max,
               l.c->n() * std::numeric_limits<double>::epsilon(), seconds_since(start));
-  EXPECT_TRUE(m.cholesky);
-  EXPECT_GT(m.lowest(0), m.floor);
+  if (definite) {
+    EXPECT_TRUE(m.cholesky);
+    EXPECT_GT(m.lowest(0), m.floor);
+  } else {
+    // Positive semi-definite: no eigenvalue below -floor (round-off of a
+    // Lanczos eigenvalue of M: n eps lambda_max(M)).
+    EXPECT_GE(m.lowest(0), -m.floor);
+  }
 }
 
 void modes_orthonormal(Loaded& l, const Plan& plan) {
@@ -406,12 +411,19 @@ protected:
 using Blade3dRows = ComponentRows<Blade3d>;
 using Rotor37Rows = ComponentRows<Rotor37>;
 
-// The assumption of every row with modes.
+// The mass matrices as the import delivers them. The gmsh blade's C3D10
+// mass is positive definite. ccx's mass of Rotor 37 (C3D15 wedges,
+// integrated with 9 points) is singular: about 100 directions with
+// M phi = 0 to 1e-22 of lambda_max(M) (eigenvalues in triples, a gap of ten
+// orders to the next): the rows with modes hold regardless (infinite
+// eigenvalues are never among the lowest), but the full model has no finite
+// omega_max and central differences cannot integrate it; every reduced
+// model has one.
 TEST_F(Blade3dRows, MassPositiveDefinite) {
-  mass_positive_definite(loaded());
+  mass_positive_definite(loaded(), true);
 }
-TEST_F(Rotor37Rows, MassPositiveDefinite) {
-  mass_positive_definite(loaded());
+TEST_F(Rotor37Rows, MassPositiveSemiDefinite) {
+  mass_positive_definite(loaded(), false);
 }
 
 // V3: Phi^T M Phi = I, Phi^T K Phi = Omega^2 for the full modes, the
@@ -475,9 +487,17 @@ TEST_F(Rotor37Rows, MacNealMasslessBoundary) {
 
 // V4: CB with every fixed-interface mode spans the whole space: its
 // eigenvalues are the full dense ones, its static response exact. Dense
-// n x n (4,101): the blade only.
+// n x n: on the blade at element_size 20 (2,091 dofs; the 4,101-dof default
+// costs 62-84 s here, cubic in n), the same geometry and boundary rule.
 TEST_F(Blade3dRows, CompleteCraigBamptonIsFull) {
-  Loaded& l = loaded();
+  std::ifstream in(plan().case_file);
+  ComponentCase coarse = parse_component_case(nlohmann::json::parse(in), plan().case_file);
+  coarse.gmsh_blade.element_size = 20.0;
+  Loaded l;
+  l.model = load_component(coarse, {"", cache_dir()});
+  l.c = std::make_unique<rows::Component>(l.model.stiffness, l.model.mass, l.model.boundary);
+  std::printf("gmsh blade at element_size 20: %d dofs, %zu boundary dofs\n", l.model.n_dofs(),
+              l.model.boundary.size());
   const rows::Component& c = *l.c;
   const int n_interior = c.n() - c.n_boundary();
   const Clock::time_point start = Clock::now();

@@ -20,7 +20,7 @@
 // the dense path and in max_angular_frequency (no finite omega_max). The
 // sparse path needs M only positive semi-definite (massless directions are
 // infinite eigenvalues, never among the lowest) and then sets omega_max to
-// +infinity: CalculiX's C3D10 mass of Rotor 37 is singular (about 100
+// +infinity: CalculiX's mass of Rotor 37 (C3D15 wedges) is singular (about 100
 // directions with M phi = 0 to 1e-15). Eigenvectors are mass-normalised:
 // Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
 
