@@ -252,8 +252,14 @@ double Component::cond_k() const {
 
 double Component::lambda_max() const {
   if (m_lambda_max == 0.0) {
-    const double omega = max_angular_frequency(m_k, m_m);
-    m_lambda_max = omega * omega;
+    try {
+      const double omega = max_angular_frequency(m_k, m_m);
+      m_lambda_max = omega * omega;
+    } catch (const ModalError&) {
+      // M not positive definite (Rotor 37's is singular): massless
+      // directions are infinite eigenvalues.
+      m_lambda_max = std::numeric_limits<double>::infinity();
+    }
   }
   return m_lambda_max;
 }
