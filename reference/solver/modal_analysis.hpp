@@ -39,7 +39,7 @@ public:
 struct Modes {
   Eigen::VectorXd omega_squared; ///< ascending [rad^2/s^2]
   Eigen::MatrixXd shapes;        ///< columns mass-normalised
-  double omega_max = 0.0;        ///< largest omega of the whole model [rad/s]; +inf for a singular M
+  double omega_max = 0.0;        ///< largest omega of the model [rad/s], +inf if M singular
 
   int n_modes() const { return static_cast<int>(omega_squared.size()); }
   double frequency_hz(int i) const;
