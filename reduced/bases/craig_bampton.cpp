@@ -17,13 +17,25 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
   ReducedBasis basis;
   basis.method = "cb";
   basis.n_modes = eta;
-  const Eigen::MatrixXd psi = constraint_modes(stiffness, p);
+  Eigen::MatrixXd psi;
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(p.n(), eta + p.n_boundary());
   if (eta > 0) {
-    const Modes fixed = lowest_modes(sparse_block(stiffness, p.interior, p.interior),
-                                     sparse_block(mass, p.interior, p.interior), eta,
-                                     few_modes(eta, p.n_interior()));
+    const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
+    const Eigen::SparseMatrix<double> m_ii = sparse_block(mass, p.interior, p.interior);
+    const ModalSolver solver = few_modes(eta, p.n_interior());
+    Modes fixed;
+    if (solver == ModalSolver::sparse && shares_factor(p.n_interior())) {
+      const auto factor = factor_positive_definite(k_ii, m_ii, interior_stiffness_name(p),
+                                                   interior_stiffness_remedy);
+      psi = constraint_modes(stiffness, p, *factor, k_ii);
+      fixed = lowest_modes(k_ii, m_ii, eta, *factor);
+    } else {
+      psi = constraint_modes(stiffness, p);
+      fixed = lowest_modes(k_ii, m_ii, eta, solver);
+    }
     t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
+  } else {
+    psi = constraint_modes(stiffness, p);
   }
   t.rightCols(p.n_boundary()) =
       place_rows(p.n(), p.interior, psi) +

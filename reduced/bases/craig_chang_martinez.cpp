@@ -58,11 +58,18 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
     r.value = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
               take_rows(phi2, p.boundary).transpose();
   } else {
-    r = solve_positive_definite(
-        stiffness, place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb)),
-        name + ": the bladed-disk stiffness K (" + square_size(n) + ")", stiffness_remedy);
+    const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
+    const std::string k_name = name + ": the bladed-disk stiffness K (" + square_size(n) + ")";
+    Modes free;
+    if (psi > 0 && shares_factor(n)) {
+      const auto factor = factor_positive_definite(stiffness, mass, k_name, stiffness_remedy);
+      r = solve_with(*factor, stiffness, unit, k_name);
+      free = lowest_modes(stiffness, mass, psi, *factor);
+    } else {
+      r = solve_positive_definite(stiffness, unit, k_name, stiffness_remedy);
+      if (psi > 0) free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
+    }
     if (psi > 0) {
-      const Modes free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
       phi1 = free.shapes;
       r.value -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
                  take_rows(phi1, p.boundary).transpose();

@@ -7,6 +7,8 @@
 
 #include <Eigen/CholmodSupport>
 
+#include "transpose_product.hpp"
+
 namespace rsi {
 
 namespace {
@@ -69,16 +71,55 @@ AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
   return accurate_solve(a, {}, {b, {}}, solve, name);
 }
 
+std::unique_ptr<CholmodShiftInvert> factor_positive_definite(const Eigen::SparseMatrix<double>& a,
+                                                             const Eigen::SparseMatrix<double>& mass,
+                                                             const std::string& name,
+                                                             const std::string& remedy) {
+  auto factor = std::make_unique<CholmodShiftInvert>(a, mass);
+  factor->set_shift(0.0);
+  std::ostringstream why;
+  const double floor = a.rows() * std::numeric_limits<double>::epsilon();
+  if (!factor->factorized())
+    why << "CHOLMOD: " << factor->message();
+  else if (!(factor->factor().rcond() >= floor))
+    why << "CHOLMOD reciprocal condition estimate " << factor->factor().rcond() << " < n eps = "
+        << floor;
+  if (!why.str().empty())
+    throw ReductionError(name + " is singular or indefinite (" + why.str() + "); " + remedy);
+  return factor;
+}
+
+AccurateMatrix solve_with(const CholmodShiftInvert& factor, const Eigen::SparseMatrix<double>& a,
+                          const Eigen::MatrixXd& b, const std::string& name) {
+  const WorkingSolve solve = [&](const Eigen::MatrixXd& r) {
+    Eigen::MatrixXd x(r.rows(), r.cols());
+    if (!factor.solve(r, x)) throw ReductionError(name + ": CHOLMOD solve failed");
+    return x;
+  };
+  return accurate_solve(a, {}, {b, {}}, solve, name);
+}
+
+std::string interior_stiffness_name(const Partition& p) {
+  return "constraint modes: the interior stiffness K_II (" + std::to_string(p.n_interior()) +
+         " x " + std::to_string(p.n_interior()) + ", boundary dofs held)";
+}
+
+const char* const interior_stiffness_remedy =
+    "the boundary must hold the part against every rigid motion (is the hub clamped?)";
+
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p) {
   const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
   const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
-  return solve_positive_definite(k_ii, -Eigen::MatrixXd(k_ib),
-                                 "constraint modes: the interior stiffness K_II (" +
-                                     std::to_string(p.n_interior()) + " x " +
-                                     std::to_string(p.n_interior()) + ", boundary dofs held)",
-                                 "the boundary must hold the part against every rigid motion "
-                                 "(is the hub clamped?)")
+  return solve_positive_definite(k_ii, -Eigen::MatrixXd(k_ib), interior_stiffness_name(p),
+                                 interior_stiffness_remedy)
       .value;
+}
+
+Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
+                                 const CholmodShiftInvert& k_ii_factor,
+                                 const Eigen::SparseMatrix<double>& k_ii) {
+  const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
+  return solve_with(k_ii_factor, k_ii, -Eigen::MatrixXd(k_ib), interior_stiffness_name(p)).value;
 }
 
 void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
@@ -87,9 +128,13 @@ void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
                   ReducedBasis& basis) {
   for (int b = 0; b < n_boundary; ++b)
     basis.boundary_position.push_back(first_boundary_position + b);
+  // K^T T, not K T: equal for the symmetric K and M of a component
+  // (linalg/transpose_product gathers it, reading K once for all columns);
+  // for a K with round-off asymmetry it gives the transpose of T^T K T,
+  // whose symmetric part below is the same up to round-off.
   const Eigen::MatrixXd& t = basis.transformation;
-  const Eigen::MatrixXd k = t.transpose() * (stiffness * t);
-  const Eigen::MatrixXd m = t.transpose() * (mass * t);
+  const Eigen::MatrixXd k = t.transpose() * transpose_product(stiffness, t);
+  const Eigen::MatrixXd m = t.transpose() * transpose_product(mass, t);
   basis.stiffness = 0.5 * (k + k.transpose());
   basis.mass = 0.5 * (m + m.transpose());
   basis.build_seconds =

@@ -6,11 +6,14 @@
 // psi = 0 (SPEC V4). Assumes K_II positive definite (the hub is clamped).
 
 #include <chrono>
+#include <memory>
 #include <string>
 
 #include <Eigen/SparseCore>
 
 #include "accurate_solve.hpp"
+#include "cholmod_shift_invert.hpp"
+#include "modal_analysis.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
 
@@ -29,11 +32,41 @@ AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
                                        const Eigen::MatrixXd& b, const std::string& name,
                                        const std::string& remedy);
 
+/// The large-model path: from block_method_min_dofs dofs on, one CHOLMOD
+/// factor of A serves both the static solves (accurate_solve with it) and
+/// the modes (lowest_modes on the factor), instead of a factorization each
+/// (1.5 s apiece for Rotor 37's K_II). True if A (n x n) takes it.
+inline bool shares_factor(int n) {
+  return n >= block_method_min_dofs;
+}
+
+/// A's factor (shift-invert operator at shift 0, with `mass` for the
+/// modes), checked as solve_positive_definite checks its own (not positive
+/// definite, or CHOLMOD's rcond < n eps): ReductionError "`name` is
+/// singular or indefinite (...); `remedy`".
+std::unique_ptr<CholmodShiftInvert> factor_positive_definite(const Eigen::SparseMatrix<double>& a,
+                                                             const Eigen::SparseMatrix<double>& mass,
+                                                             const std::string& name,
+                                                             const std::string& remedy);
+
+/// X = A^-1 B refined to the last bit (accurate_solve) on a checked factor of A.
+AccurateMatrix solve_with(const CholmodShiftInvert& factor, const Eigen::SparseMatrix<double>& a,
+                          const Eigen::MatrixXd& b, const std::string& name);
+
 /// Psi_I = -K_II^-1 K_IB (n_I x n_B), by solve_positive_definite: rounded
 /// to the last bit, so it does not depend on the factor's round-off. Throws
 /// ReductionError naming K_II if it is singular or indefinite (the boundary
 /// does not hold the part against every rigid motion).
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p);
+
+/// The same on K_II's factor (k_ii = K_II, as factorized).
+Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
+                                 const CholmodShiftInvert& k_ii_factor,
+                                 const Eigen::SparseMatrix<double>& k_ii);
+
+/// The name and remedy of K_II in the messages of constraint_modes.
+std::string interior_stiffness_name(const Partition& p);
+extern const char* const interior_stiffness_remedy;
 
 /// Completes a basis whose transformation is set: the n_boundary boundary
 /// coordinates sit at q[first_boundary_position ...], K^ = T^T K T and

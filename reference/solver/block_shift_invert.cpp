@@ -5,22 +5,22 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <lapacke.h>
 
 #include "cholmod_shift_invert.hpp"
+#include "transpose_product.hpp"
 
 namespace rsi {
 
 namespace {
 
 using Matrix = Eigen::MatrixXd;
-using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 using Clock = std::chrono::steady_clock;
 using Status = BlockShiftInvertResult::Status;
 
@@ -69,45 +69,10 @@ void gemm_nn(double alpha, const Eigen::Ref<const Matrix>& a, const Eigen::Ref<c
   gemm('N', alpha, a, b, beta, c);
 }
 
-/// y = A x for a symmetric A in full storage, so that column i of A is row
-/// i: row i of y gathers the rows of x that column names, each entry of A
-/// taken as coefficient(entry). x and y are copied to row-major (each gather
-/// reads contiguous rows of x); large products are split in two ranges of
-/// rows of equal nonzeros, one a thread.
-template <class Coefficient>
-void gather_product(const Eigen::SparseMatrix<double>& a, const Eigen::Ref<const Matrix>& x,
-                    Eigen::Ref<Matrix> y, Coefficient coefficient) {
-  const Eigen::Index n = a.rows();
-  const RowMatrix xr = x;
-  RowMatrix yr(n, x.cols());
-  const int* outer = a.outerIndexPtr();
-  const int* inner = a.innerIndexPtr();
-  const double* value = a.valuePtr();
-  auto rows = [&](Eigen::Index first, Eigen::Index last) {
-    for (Eigen::Index i = first; i < last; ++i) {
-      auto yi = yr.row(i);
-      yi.setZero();
-      for (int k = outer[i]; k < outer[i + 1]; ++k)
-        yi += coefficient(value[k]) * xr.row(inner[k]);
-    }
-  };
-  const double work = static_cast<double>(a.nonZeros()) * static_cast<double>(x.cols());
-  if (work < 2e7 || std::thread::hardware_concurrency() < 2) {
-    rows(0, n);
-  } else {
-    const Eigen::Index middle =
-        std::lower_bound(outer, outer + n, outer[n] / 2) - outer; // half the nonzeros
-    std::thread second(rows, middle, n);
-    rows(0, middle);
-    second.join();
-  }
-  y = yr;
-}
-
-/// y = A x, A symmetric in full storage (compressed).
+/// y = A x for a symmetric A in full storage (A^T x: linalg/transpose_product).
 void symmetric_product(const Eigen::SparseMatrix<double>& a, const Eigen::Ref<const Matrix>& x,
                        Eigen::Ref<Matrix> y) {
-  gather_product(a, x, y, [](double v) { return v; });
+  y = transpose_product(a, x);
 }
 
 /// Uniform in [-1, 1), the same on every platform for a seed.
@@ -236,7 +201,8 @@ NewBlock orthonormalize(const Eigen::SparseMatrix<double>& mass, const Eigen::Re
 
 BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
                                           const Eigen::SparseMatrix<double>& mass, int count,
-                                          const BlockShiftInvertOptions& options) {
+                                          const BlockShiftInvertOptions& options,
+                                          const CholmodShiftInvert* factorized) {
   const Eigen::Index n = stiffness.rows();
   const int b = options.block_size;
   const int kept = options.n_kept > 0 ? options.n_kept : count + b / 2;
@@ -260,8 +226,14 @@ BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& sti
 
   BlockShiftInvertResult result;
   auto start = Clock::now();
-  CholmodShiftInvert op(stiffness, mass, options.factorization);
-  op.set_shift(0.0);
+  if (factorized != nullptr && (factorized->rows() != n || factorized->shift() != 0.0))
+    throw std::invalid_argument("block_shift_invert: the factor given is not of this K at shift 0");
+  std::optional<CholmodShiftInvert> own;
+  if (factorized == nullptr) {
+    own.emplace(stiffness, mass, options.factorization);
+    own->set_shift(0.0);
+  }
+  const CholmodShiftInvert& op = factorized != nullptr ? *factorized : *own;
   result.seconds.factorization = seconds_since(start);
   if (!op.factorized()) {
     result.status = op.info() == CholmodFactor::Status::not_positive_definite

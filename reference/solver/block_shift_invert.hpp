@@ -112,9 +112,16 @@ struct BlockShiftInvertResult {
   } seconds;
 };
 
+class CholmodShiftInvert;
+
 /// The `count` lowest eigenpairs (1 <= count; the basis must fit: max_basis + b <= n).
+/// `factorized`, if given, is a successful factor of this K at shift 0,
+/// used instead of factorizing K again (a caller that needs K^-1 for more
+/// than the modes factorizes once); its size and shift are checked
+/// (std::invalid_argument), and options.factorization is then not used.
 BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
                                           const Eigen::SparseMatrix<double>& mass, int count,
-                                          const BlockShiftInvertOptions& options = {});
+                                          const BlockShiftInvertOptions& options = {},
+                                          const CholmodShiftInvert* factorized = nullptr);
 
 } // namespace rsi

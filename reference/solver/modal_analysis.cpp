@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,14 +95,6 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
   return solver.eigenvalues()(0);
 }
 
-/// Up to this size the sparse path keeps Spectra's shift-invert Lanczos on
-/// Eigen's SparseLU (fast at these sizes: the 2D bladed disks of this suite
-/// have up to 5,000 dofs). The campaign's stored thresholds were measured
-/// with it, and its CB runs split pairs of equal eigenvalues (cyclic
-/// symmetry: CB-4 ... CB-64 take one vector of a pair equal to 1e-13), whose
-/// vector, and so the reduced model, depends on the round-off of the solver.
-constexpr int block_method_min_dofs = 10000;
-
 /// The block method's parameters for `count` modes (measured on Rotor 37,
 /// bench/RESULTS.md), or block_size 0 if its basis would take more than
 /// half the space.
@@ -116,8 +109,10 @@ BlockShiftInvertOptions block_options(int count, int n) {
 /// The `count` lowest eigenpairs by the block method (large models).
 void block_modes(const Eigen::SparseMatrix<double>& stiffness,
                  const Eigen::SparseMatrix<double>& mass, int count,
-                 const BlockShiftInvertOptions& options, Modes& modes) {
-  const BlockShiftInvertResult result = block_shift_invert(stiffness, mass, count, options);
+                 const BlockShiftInvertOptions& options, const CholmodShiftInvert* factorized,
+                 Modes& modes) {
+  const BlockShiftInvertResult result =
+      block_shift_invert(stiffness, mass, count, options, factorized);
   using Status = BlockShiftInvertResult::Status;
   switch (result.status) {
   case Status::successful:
@@ -189,18 +184,22 @@ double largest_diagonal_ratio(const Eigen::SparseMatrix<double>& stiffness,
   return largest;
 }
 
+/// `factorized`: a factor of K at shift 0 the caller made, or null.
 Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
-                   const Eigen::SparseMatrix<double>& mass, int count) {
+                   const Eigen::SparseMatrix<double>& mass, int count,
+                   CholmodShiftInvert* factorized) {
   const int n = static_cast<int>(stiffness.rows());
   Modes modes;
   const BlockShiftInvertOptions options = block_options(count, n);
-  if (n < block_method_min_dofs) {
+  if (factorized == nullptr && n < block_method_min_dofs) {
     Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse> op(stiffness, mass);
     lanczos_modes(op, mass, count, modes);
   } else if (options.block_size > 0) {
-    block_modes(stiffness, mass, count, options, modes);
+    block_modes(stiffness, mass, count, options, factorized, modes);
   } else {
-    CholmodShiftInvert op(stiffness, mass);
+    std::optional<CholmodShiftInvert> own;
+    if (factorized == nullptr) own.emplace(stiffness, mass);
+    CholmodShiftInvert& op = factorized != nullptr ? *factorized : *own;
     op.set_shift(0.0);
     if (!op.factorized())
       throw ModalError("modal analysis: the stiffness matrix is singular or indefinite (" +
@@ -251,7 +250,20 @@ Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
   if (!dense && count >= n)
     throw std::invalid_argument("lowest_modes: the sparse solver needs count < " +
                                 std::to_string(n));
-  return dense ? dense_modes(stiffness, mass, count) : sparse_modes(stiffness, mass, count);
+  return dense ? dense_modes(stiffness, mass, count)
+               : sparse_modes(stiffness, mass, count, nullptr);
+}
+
+Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
+                   const Eigen::SparseMatrix<double>& mass, int count,
+                   CholmodShiftInvert& factorized) {
+  const int n = static_cast<int>(stiffness.rows());
+  if (count < 1 || count >= n)
+    throw std::invalid_argument("lowest_modes: count must be in [1, " + std::to_string(n - 1) +
+                                "], got " + std::to_string(count));
+  if (factorized.rows() != n)
+    throw std::invalid_argument("lowest_modes: the factor given is of another matrix size");
+  return sparse_modes(stiffness, mass, count, &factorized);
 }
 
 } // namespace rsi
