@@ -24,6 +24,7 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
                                      sparse_block(mass, p.interior, p.interior), eta,
                                      few_modes(eta, p.n_interior()));
     t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
+    basis.mode_omega = fixed.omega_squared.cwiseSqrt();
   }
   t.rightCols(p.n_boundary()) =
       place_rows(p.n(), p.interior, psi) +
