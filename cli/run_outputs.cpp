@@ -41,9 +41,9 @@ std::string history_csv(const History& h) {
   const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
   std::string out = history_csv_header(n_blades);
   for (int i = 0; i < h.n_rows(); ++i)
-    append_history_csv_row(out, HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
-                                           h.external_work[i], h.contact_work[i],
-                                           h.damping_work[i]});
+    append_history_csv_row(out,
+                           HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
+                                      h.external_work[i], h.contact_work[i], h.damping_work[i]});
   return out;
 }
 

@@ -27,7 +27,8 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     , m_contact(contact) {
   const Eigen::Index r = m_kq.rows();
   if (damping.bladed_disk.size() != 0) {
-    if (damping.bladed_disk.size() != r || !damping.bladed_disk.unaryExpr(&finite_non_negative).all())
+    if (damping.bladed_disk.size() != r ||
+        !damping.bladed_disk.unaryExpr(&finite_non_negative).all())
       throw std::invalid_argument("ReducedIntegrator: the bladed-disk damping must have " +
                                   std::to_string(r) + " finite entries >= 0");
     m_q_damped = (damping.bladed_disk.array() != 0.0).any();
@@ -45,25 +46,25 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   }
   const Eigen::LLT<Eigen::MatrixXd> mq_factor(a_q);
   if (mq_factor.info() != Eigen::Success)
-    throw ReducedIntegrationError(
-        std::string("reduced integrator: the reduced mass matrix") +
-        (m_q_damped ? " plus dt/2 C^" : "") + " is not positive definite");
+    throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
+                                  (m_q_damped ? " plus dt/2 C^" : "") +
+                                  " is not positive definite");
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_aq = mq_factor.solve(m_kq);
   if (m_q_damped) m_bq = dt * (m_mq_inverse * m_cq.asDiagonal());
 
   // A_c = M_c + dt/2 (alpha M_c + beta K_c) (M_c undamped).
   const Eigen::SparseMatrix<double> a_c =
-      m_c_damped ? Eigen::SparseMatrix<double>((1.0 + 0.5 * dt * m_casing_damping.alpha) *
-                                                   casing.mass +
-                                               (0.5 * dt * m_casing_damping.beta) * casing.stiffness)
-                 : casing.mass;
+      m_c_damped
+          ? Eigen::SparseMatrix<double>((1.0 + 0.5 * dt * m_casing_damping.alpha) * casing.mass +
+                                        (0.5 * dt * m_casing_damping.beta) * casing.stiffness)
+          : casing.mass;
   m_mc_factor.compute(a_c);
   // Eigen's LDL^T flags only zero pivots: positive definite means every D_jj > 0.
   if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
-    throw ReducedIntegrationError(
-        std::string("reduced integrator: the casing mass matrix") +
-        (m_c_damped ? " plus dt/2 C_c" : "") + " is not positive definite");
+    throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
+                                  (m_c_damped ? " plus dt/2 C_c" : "") +
+                                  " is not positive definite");
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
   const int nc = casing.n_dofs();
   m_mc_order.resize(nc);

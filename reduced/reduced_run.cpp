@@ -58,9 +58,9 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
   RunMonitor monitor(c, casing, options.run, result);
   std::vector<Eigen::VectorXd> field;
   auto state = [&]() {
-    return StepState{integrator.step_index(),   integrator.time(),         integrator.gap(),
-                     integrator.lambda(),       integrator.external_work(),
-                     integrator.contact_work(), integrator.casing(),       integrator.damping_work()};
+    return StepState{integrator.step_index(), integrator.time(),          integrator.gap(),
+                     integrator.lambda(),     integrator.external_work(), integrator.contact_work(),
+                     integrator.casing(),     integrator.damping_work()};
   };
   Eigen::VectorXd u(bd.n_dofs());
   auto record_field = [&]() {

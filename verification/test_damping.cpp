@@ -34,9 +34,9 @@
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
-#include "critical_step.hpp"
 #include "casing.hpp"
 #include "central_difference.hpp"
+#include "critical_step.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
 #include "reduced_contact.hpp"
@@ -130,7 +130,9 @@ struct DampedMode {
   }
   Oscillation continuous() const { return {sigma(), omega_d(), b()}; }
   /// |discrete(n) - exact(n dt)| <= this: the scheme's amplitude and phase errors.
-  double discretization_bound(int n) const { return distance_bound(scheme(), continuous(), n * dt); }
+  double discretization_bound(int n) const {
+    return distance_bound(scheme(), continuous(), n * dt);
+  }
 };
 
 /// |phi|^T |M| |u|: the scale of the rounding of phi^T M u (Higham eq. 3.5:
@@ -187,7 +189,8 @@ void reference_step_response(const BladedDisk& bd, const Eigen::VectorXd& phi, d
               "(bound %.3e), |x - exact| / x_s max %.3e (bound %.3e)%s\n",
               omega, zeta, omega * dt, steps, worst_scheme, worst_scheme_bound, worst_exact,
               worst_exact_bound, exact ? "" : " (exact not asserted)");
-  std::printf("envelope exp(-zeta omega t) at the end: %.4f\n", std::exp(-zeta * omega * steps * dt));
+  std::printf("envelope exp(-zeta omega t) at the end: %.4f\n",
+              std::exp(-zeta * omega * steps * dt));
 }
 
 TEST(Damping, ReferenceRayleighDecayOfTheFirstMode) {
@@ -267,8 +270,8 @@ TEST(Damping, ReducedModalDecayOfAFreeInterfaceMode) {
   // 1 mm clearance (checked: no contact below).
   const double a = 1e-6 / basis.transformation.cwiseAbs().maxCoeff() / q_i.cwiseAbs().maxCoeff();
   integrator.start(Eigen::VectorXd::Zero(casing.n_dofs()), a * q_i);
-  const DampedMode mode(omega_q, zeta_q, dt);  // the reduced model's mode
-  const DampedMode nominal(omega, zeta, dt);   // what the case file asks for
+  const DampedMode mode(omega_q, zeta_q, dt); // the reduced model's mode
+  const DampedMode nominal(omega, zeta, dt);  // what the case file asks for
   const int steps = static_cast<int>(3.0 * 2.0 * M_PI / omega / dt);
   double worst_scheme = 0.0, worst_exact = 0.0, bound_scheme = 0.0, bound_exact = 0.0;
   for (int n = 1; n <= steps; ++n) {
@@ -280,9 +283,9 @@ TEST(Damping, ReducedModalDecayOfAFreeInterfaceMode) {
                             basis.n_reduced() * eps * mode.y_max() + rho * rho;
     // exp(-zeta omega t) as asked: the scheme's amplitude and phase errors, the
     // distance from the reduced mode to the nominal one, and the above.
-    const double exact_bound =
-        mode.discretization_bound(n) +
-        distance_bound(mode.continuous(), nominal.continuous(), n * dt) + roundoff;
+    const double exact_bound = mode.discretization_bound(n) +
+                               distance_bound(mode.continuous(), nominal.continuous(), n * dt) +
+                               roundoff;
     const double scheme_error = std::abs(y - mode.discrete(n));
     const double exact_error = std::abs(y - nominal.exact(n * dt));
     worst_scheme = std::max(worst_scheme, scheme_error);
@@ -331,7 +334,8 @@ Case with_damping(const std::string& damping_json, double duration) {
 TEST(Damping, ZeroDampingIsTheUndampedRunBitForBit) {
   Case absent = default_case();
   absent.time.duration = 0.005; // contact from 3.96 ms: the contact solver runs
-  const Case zero = with_damping(R"({"rayleigh": {"alpha": 0, "beta": 0}, "modal_ratio": 0})", 0.005);
+  const Case zero =
+      with_damping(R"({"rayleigh": {"alpha": 0, "beta": 0}, "modal_ratio": 0})", 0.005);
   EXPECT_FALSE(zero.damping.rayleigh.any());
   const RunResult full_absent = run_reference(absent, {});
   const RunResult full_zero = run_reference(zero, {});
@@ -359,8 +363,8 @@ void expect_balance(const RunSummary& s) {
 }
 
 TEST(Damping, EnergyBalanceClosesWithDamping) {
-  const Case c = with_damping(
-      R"({"rayleigh": {"alpha": 30, "beta": 2e-6}, "modal_ratio": 0.02})", 0.02);
+  const Case c =
+      with_damping(R"({"rayleigh": {"alpha": 30, "beta": 2e-6}, "modal_ratio": 0.02})", 0.02);
   expect_balance(run_reference(c, {}).summary);
   ReducedRunOptions options;
   expect_balance(run_reduced(c, "cb", 10, options).run.summary);
@@ -401,10 +405,10 @@ TEST(Damping, CaseFileKeys) {
   EXPECT_EQ(c.damping.modal_ratio, 0.01);
   const Case only_ratio = with_damping(R"({"modal_ratio": 0.005})", 0.02);
   EXPECT_FALSE(only_ratio.damping.rayleigh.any());
-  for (const char* bad : {R"({"rayleigh": {"alpha": -1, "beta": 0}})",
-                          R"({"rayleigh": {"alpha": 0, "beta": -1e-9}})",
-                          R"({"modal_ratio": 1})", R"({"modal_ratio": -0.5})",
-                          R"({"rayleigh": {"alpha": 1}})", R"({"ratio": 0.01})"}) {
+  for (const char* bad :
+       {R"({"rayleigh": {"alpha": -1, "beta": 0}})", R"({"rayleigh": {"alpha": 0, "beta": -1e-9}})",
+        R"({"modal_ratio": 1})", R"({"modal_ratio": -0.5})", R"({"rayleigh": {"alpha": 1}})",
+        R"({"ratio": 0.01})"}) {
     try {
       with_damping(bad, 0.02);
       ADD_FAILURE() << "accepted " << bad;

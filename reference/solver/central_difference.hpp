@@ -148,8 +148,8 @@ private:
   double m_dt;
   const ContactLaw& m_law;
   RayleighDamping m_damping;
-  bool m_damped; ///< alpha or beta > 0
-  MassFactor m_mass_factor; ///< of A = M + dt/2 C (M undamped)
+  bool m_damped;                     ///< alpha or beta > 0
+  MassFactor m_mass_factor;          ///< of A = M + dt/2 C (M undamped)
   const Eigen::VectorXi& m_position; ///< u'(m_position(i)) = u(i)
   RowMajorMatrix m_k;                ///< K'
   RowMajorMatrix m_m;                ///< M'
@@ -167,7 +167,7 @@ private:
   Eigen::VectorXd m_u_prev;
   Eigen::VectorXd m_ku; ///< K' u'_n
   // Damped runs only: C' u'_n and C' u'_{n-1}, with C' = alpha M' + beta K'.
-  SparseRows m_m_rows; ///< M', for its product (alpha > 0)
+  SparseRows m_m_rows;       ///< M', for its product (alpha > 0)
   Eigen::VectorXd m_mu;      ///< M' u'_{n+1} (work storage)
   Eigen::VectorXd m_cu;      ///< C' u'_n
   Eigen::VectorXd m_cu_prev; ///< C' u'_{n-1}

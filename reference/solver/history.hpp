@@ -90,12 +90,12 @@ struct RunSummary {
   double initial_energy = 0.0;        ///< [J]
   double max_energy = 0.0;            ///< [J]
   double energy_balance_error = 0.0;  ///< max_n |E_n - E_0 - W_ext - W_contact + W_damp| [J]
-  double energy_scale = 0.0; ///< max_n max(E_n, |W_ext|, |W_contact|, W_damp) [J]
+  double energy_scale = 0.0;          ///< max_n max(E_n, |W_ext|, |W_contact|, W_damp) [J]
   double final_external_work = 0.0;
   double final_contact_work = 0.0;
   double final_damping_work = 0.0; ///< W_damp at the last row (0 undamped) [J]
-  int max_active = 0;          ///< most contacts active at once
-  int first_contact_step = -1; ///< first step with any lambda > 0 (-1: none)
+  int max_active = 0;              ///< most contacts active at once
+  int first_contact_step = -1;     ///< first step with any lambda > 0 (-1: none)
   /// [first, last] step times with lambda_1 > 0: one entry per contact
   /// interval of blade 1 (not per step), so it grows with the number of
   /// separate contacts, never with the run's length alone.
