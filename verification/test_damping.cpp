@@ -26,6 +26,7 @@
 #include <complex>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -143,35 +144,29 @@ double abs_product(const Eigen::VectorXd& phi, const Eigen::SparseMatrix<double>
   return phi.cwiseAbs().dot(abs_m * u.cwiseAbs());
 }
 
-/// The reference integrator on the bladed disk alone under the step force
-/// F = M phi on mass-normalised mode phi (modal force 1, no other mode
-/// forced since phi_j^T M phi = delta_j): the modal coordinate is
-/// x = x_s (1 - y) with x_s = 1 / omega^2 and y the single-mode solution.
-/// Checks x = phi^T M u against the closed form and the exact solution
-/// every `every` steps (against the exact solution only when `exact`: a
-/// complex pair of roots).
-void reference_step_response(const BladedDisk& bd, const Eigen::VectorXd& phi, double omega,
-                             const RayleighDamping& damping, double dt, int steps, int every,
-                             bool exact) {
-  const double zeta = damping.alpha / (2.0 * omega) + damping.beta * omega / 2.0;
-  const DampedMode mode(omega, zeta, dt);
-  const double x_s = 1.0 / (omega * omega);
-  const NoContact law;
-  CentralDifference cd(bd.stiffness, bd.mass, dt, law, damping);
-  const Eigen::VectorXd force = bd.mass * phi;
-  cd.start(force);
-  const int n_terms = bd.n_dofs() + 64; // a dot product over the dofs and a row of M
+/// A step response of one mode: under F = M phi held from t = 0 (phi
+/// mass-normalised: modal force 1, no other mode forced since
+/// phi_j^T M phi = delta_j) the modal coordinate is x = x_s (1 - y) with
+/// x_s = 1 / omega^2 and y the single-mode solution. `advance` takes one
+/// step and returns the displacement u of the part; x = phi^T M u is checked
+/// against the closed form and (when `exact`: a complex pair of roots) the
+/// exact solution every `every` steps.
+void check_step_response(const DampedMode& mode, const Eigen::VectorXd& phi,
+                         const Eigen::SparseMatrix<double>& mass, int steps, int every, bool exact,
+                         const std::function<const Eigen::VectorXd&()>& advance) {
+  const double x_s = 1.0 / (mode.omega * mode.omega);
+  const int n_terms = static_cast<int>(mass.rows()) + 64; // a dot product and a row of M
   double worst_scheme = 0.0, worst_exact = 0.0, worst_scheme_bound = 0.0, worst_exact_bound = 0.0;
   for (int n = 1; n <= steps; ++n) {
-    cd.step();
+    const Eigen::VectorXd& u = advance();
     if (n % every != 0 && n != steps) continue;
-    const Eigen::VectorXd& u = cd.displacement();
-    const double x = phi.dot(bd.mass * u);
-    // |x| / x_s = |1 - y| <= 1 + y_max.
+    const double x = phi.dot(mass * u);
+    // |x| / x_s = |1 - y| <= 1 + y_max; the projection phi^T M u rounds
+    // within n_terms eps |phi|^T |M| |u| (Higham eq. 3.5).
     const double roundoff = roundoff_per_step * eps * (1.0 + mode.y_max()) * mode.green_sum(n) +
-                            n_terms * eps * abs_product(phi, bd.mass, u) / x_s;
+                            n_terms * eps * abs_product(phi, mass, u) / x_s;
     const double scheme_error = std::abs(x / x_s - (1.0 - mode.discrete(n)));
-    const double exact_error = std::abs(x / x_s - (1.0 - mode.exact(n * dt)));
+    const double exact_error = std::abs(x / x_s - (1.0 - mode.exact(n * mode.dt)));
     const double exact_bound = mode.discretization_bound(n) + roundoff;
     worst_scheme = std::max(worst_scheme, scheme_error);
     worst_exact = std::max(worst_exact, exact_error);
@@ -186,11 +181,27 @@ void reference_step_response(const BladedDisk& bd, const Eigen::VectorXd& phi, d
     }
   }
   std::printf("omega %.6g rad/s, zeta %.4g, omega dt %.3g, %d steps: |x - scheme| / x_s max %.3e "
-              "(bound %.3e), |x - exact| / x_s max %.3e (bound %.3e)%s\n",
-              omega, zeta, omega * dt, steps, worst_scheme, worst_scheme_bound, worst_exact,
-              worst_exact_bound, exact ? "" : " (exact not asserted)");
-  std::printf("envelope exp(-zeta omega t) at the end: %.4f\n",
-              std::exp(-zeta * omega * steps * dt));
+              "(bound %.3e), |x - exact| / x_s max %.3e (bound %.3e)%s; envelope at the end "
+              "%.4f\n",
+              mode.omega, mode.zeta, mode.omega * mode.dt, steps, worst_scheme, worst_scheme_bound,
+              worst_exact, worst_exact_bound, exact ? "" : " (exact not asserted)",
+              std::exp(-mode.sigma() * steps * mode.dt));
+}
+
+/// The reference integrator on the bladed disk alone (no contact), Rayleigh
+/// damped, under F = M phi: check_step_response.
+void reference_step_response(const BladedDisk& bd, const Eigen::VectorXd& phi, double omega,
+                             const RayleighDamping& damping, double dt, int steps, int every,
+                             bool exact) {
+  const double zeta = damping.alpha / (2.0 * omega) + damping.beta * omega / 2.0;
+  const NoContact law;
+  CentralDifference cd(bd.stiffness, bd.mass, dt, law, damping);
+  cd.start(bd.mass * phi);
+  check_step_response(DampedMode(omega, zeta, dt), phi, bd.mass, steps, every, exact,
+                      [&]() -> const Eigen::VectorXd& {
+                        cd.step();
+                        return cd.displacement();
+                      });
 }
 
 TEST(Damping, ReferenceRayleighDecayOfTheFirstMode) {
@@ -308,6 +319,44 @@ TEST(Damping, ReducedModalDecayOfAFreeInterfaceMode) {
               e0, integrator.energy(), integrator.damping_work(), balance,
               steps * eps / (omega * dt) * e0);
   EXPECT_LE(balance, steps * eps / (omega * dt) * e0);
+}
+
+TEST(Damping, ReducedCasingRayleighStepResponse) {
+  // The reduced integrator's casing (full, Rayleigh damped): a step force
+  // M_c phi on one casing mode, the bladed disk (Guyan) at rest, no contact.
+  const Case c = default_case();
+  const BladedDisk bd = assemble_bladed_disk(c);
+  const Casing casing = assemble_casing(c);
+  const ReducedBasis basis = reduce_bladed_disk(bd, "guyan", 0);
+  const Modes modes =
+      lowest_modes(casing.stiffness, casing.mass, casing.n_dofs(), ModalSolver::dense);
+  const double dt = 0.9 * 2.0 / std::max(modes.omega_max, reduced_omega_max(basis));
+  // The casing mode nearest omega dt = 0.2: the scheme's errors are visible.
+  int k = 0;
+  for (int i = 0; i < modes.n_modes(); ++i)
+    if (std::abs(std::sqrt(modes.omega_squared(i)) * dt - 0.2) <
+        std::abs(std::sqrt(modes.omega_squared(k)) * dt - 0.2))
+      k = i;
+  const double omega = std::sqrt(modes.omega_squared(k));
+  const double zeta = 0.02; // half from alpha, half from beta
+  ReducedDamping damping;
+  damping.casing = {zeta * omega, zeta / omega};
+  const ReducedTipContact contact(bd, basis, casing, c);
+  ReducedIntegrator integrator(basis, casing, dt, contact, damping);
+  // F = s M_c phi: static deflection s / omega^2 |phi|max = 1e-6 m, far
+  // inside the 1 mm clearance (checked: no contact).
+  const Eigen::VectorXd phi = modes.shapes.col(k);
+  const double s = 1e-6 * omega * omega / phi.cwiseAbs().maxCoeff();
+  integrator.start(s * (casing.mass * phi));
+  Eigen::VectorXd u;
+  check_step_response(DampedMode(omega, zeta, dt), phi, casing.mass,
+                      static_cast<int>(3.0 * 2.0 * M_PI / omega / dt), 1, true,
+                      [&]() -> const Eigen::VectorXd& {
+                        const StepReport r = integrator.step();
+                        EXPECT_EQ(r.n_active, 0);
+                        u = integrator.casing() / s;
+                        return u;
+                      });
 }
 
 /// Keys present but zero: every history entry identical to keys absent.
