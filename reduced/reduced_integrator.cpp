@@ -80,13 +80,17 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
 
 double ReducedIntegrator::casing_flops_per_step() const {
   const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
-  return 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l +
-         5.0 * static_cast<double>(m_kc.rows());
+  const auto n = static_cast<double>(m_kc.rows());
+  double flops = 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l + 5.0 * n;
+  if (m_c_damped) flops += 4.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 10.0 * n;
+  return flops;
 }
 
 double ReducedIntegrator::flops_per_step() const {
   const auto r = static_cast<double>(m_kq.rows());
-  return 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
+  double flops = 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
+  if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
+  return flops;
 }
 
 double ReducedIntegrator::energy() const {

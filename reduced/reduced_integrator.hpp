@@ -103,10 +103,14 @@ public:
   double damping_work() const { return m_damping_work; }
   /// Flops of a contact-free, force-free step: the dense M^-1 K^ q (2 r^2),
   /// 4 r of vector updates, about 64 per tip for the gaps, sliding
-  /// velocities and step report, and the casing's flops (below).
+  /// velocities and step report, and the casing's flops (below). Damped,
+  /// also dt A^-1 C^ (q_n - q_{n-1}) (2 r^2) and about 5 r for the
+  /// difference and W_damp.
   double flops_per_step() const;
   /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
   /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
+  /// Damped, also M_c and K_c times a difference twice (force and W_damp:
+  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c.
   double casing_flops_per_step() const;
 
 private:

@@ -112,8 +112,11 @@ double CentralDifference::permuted_dot(const SparseRow& row, const Eigen::Vector
 
 double CentralDifference::flops_per_step() const {
   const double nnz_l = m_mass_factor.nonzeros_l();
-  return 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l +
-         13.0 * static_cast<double>(m_k.rows());
+  const double n = static_cast<double>(m_k.rows());
+  double flops = 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l + 13.0 * n;
+  if (m_damped) flops += 8.0 * n;
+  if (m_damping.alpha > 0.0) flops += 2.0 * static_cast<double>(m_m.nonZeros());
+  return flops;
 }
 
 double CentralDifference::energy() const {

@@ -114,6 +114,8 @@ public:
   /// Flops of a contact-free step: K'u (2 nnz(K)), L^-1 and L^-T (2 nnz(L)
   /// each), D^-1 (n) and about 12 n of vector updates (force, predictor,
   /// velocity, gathers); the contact geometry of a few tips is left out.
+  /// Damped, also M'u (2 nnz(M), alpha > 0) and about 8 n for C'u, the
+  /// damping force and W_damp (L is then A's factor).
   double flops_per_step() const;
 
 private:
