@@ -5,7 +5,8 @@
 # The damping is damping.rayleigh.alpha = 30 1/s, beta = 0 (data/README.md
 # says why: zeta_i = 15 / omega_i, 5.4 % at the 44 Hz blade family, 44 % on
 # the 5.4 Hz casing swing mode; the two-point fits of 0.5, 1 and 2 % stop
-# at 0.06 to 0.09 s, alpha = 20 at 0.14 s). Checks the exit status, the
+# at 0.06 to 0.09 s, alpha = 20 at 0.14 s, alpha = 25 completes: 30 keeps a
+# margin). Checks the exit status, the
 # summary (completed, 2e6 steps, W_damp > 0, energy balance) and the
 # history.csv damping_work column. Prints the wall time.
 # Usage: damped_one_second.sh RSI SOURCE_DIR
