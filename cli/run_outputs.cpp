@@ -22,7 +22,7 @@ std::string history_csv_header(int n_blades) {
     out += ",gap_" + std::to_string(k);
   for (int k = 1; k <= n_blades; ++k)
     out += ",lambda_" + std::to_string(k);
-  out += ",energy,external_work,contact_work\n";
+  out += ",energy,external_work,contact_work,damping_work\n";
   return out;
 }
 
@@ -32,7 +32,7 @@ void append_history_csv_row(std::string& out, const HistoryRow& row) {
     out += ',', append(out, row.gap(k));
   for (Eigen::Index k = 0; k < row.lambda.size(); ++k)
     out += ',', append(out, row.lambda(k));
-  for (double x : {row.energy, row.external_work, row.contact_work})
+  for (double x : {row.energy, row.external_work, row.contact_work, row.damping_work})
     out += ',', append(out, x);
   out += '\n';
 }
@@ -41,8 +41,9 @@ std::string history_csv(const History& h) {
   const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
   std::string out = history_csv_header(n_blades);
   for (int i = 0; i < h.n_rows(); ++i)
-    append_history_csv_row(out, HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
-                                           h.external_work[i], h.contact_work[i]});
+    append_history_csv_row(out,
+                           HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
+                                      h.external_work[i], h.contact_work[i], h.damping_work[i]});
   return out;
 }
 
@@ -87,6 +88,7 @@ std::string summary_json(const RunSummary& s) {
   j["max_energy"] = s.max_energy;
   j["final_external_work"] = s.final_external_work;
   j["final_contact_work"] = s.final_contact_work;
+  j["damping_work"] = s.final_damping_work;
   j["energy_balance_error"] = s.energy_balance_error;
   j["energy_scale"] = s.energy_scale;
   j["contact_intervals_blade_1"] = nlohmann::ordered_json::array();

@@ -9,7 +9,8 @@
 
 namespace rsi {
 
-/// t,gap_1..gap_N,lambda_1..lambda_N,energy,external_work,contact_work; 17 significant digits.
+/// t,gap_1..gap_N,lambda_1..lambda_N,energy,external_work,contact_work,damping_work; 17
+/// significant digits.
 /// Made of history_csv_header and one append_history_csv_row per row, the
 /// functions a streamed history.csv is written with (the same bytes).
 std::string history_csv(const History& history);

@@ -111,8 +111,10 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
       "max penetration %.3e m, min lambda %.3e N, max lambda %.3e N, max |lambda g| %.3e N m, "
       "sliding reversals %d\n",
       s.max_penetration, s.min_lambda, s.max_lambda, s.max_complementarity, s.sliding_reversals);
-  std::printf("energy balance error %.3e J (scale %.3e J); W_ext %.6e J, W_contact %.6e J\n",
-              s.energy_balance_error, s.energy_scale, s.final_external_work, s.final_contact_work);
+  std::printf(
+      "energy balance error %.3e J (scale %.3e J); W_ext %.6e J, W_contact %.6e J, W_damp %.6e J\n",
+      s.energy_balance_error, s.energy_scale, s.final_external_work, s.final_contact_work,
+      s.final_damping_work);
   std::printf("blade 1 contact intervals:");
   for (const auto& [a, b] : s.contact_intervals_blade_1)
     std::printf(" [%.4f, %.4f] ms", 1e3 * a, 1e3 * b);

@@ -1,28 +1,70 @@
 #include "reduced_integrator.hpp"
 
+#include <cmath>
+#include <string>
+
 namespace rsi {
 
+namespace {
+
+bool finite_non_negative(double x) {
+  return std::isfinite(x) && x >= 0.0;
+}
+
+} // namespace
+
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
-                                     const ReducedTipContact& contact)
+                                     const ReducedTipContact& contact,
+                                     const ReducedDamping& damping)
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
+    , m_casing_damping(damping.casing)
     , m_kc(casing.stiffness)
     , m_kc_rows(m_kc)
     , m_mc(casing.mass)
     , m_dt(dt)
     , m_mu(contact.friction_coefficient())
     , m_contact(contact) {
-  const Eigen::LLT<Eigen::MatrixXd> mq_factor(m_mq);
+  const Eigen::Index r = m_kq.rows();
+  if (damping.bladed_disk.size() != 0) {
+    if (damping.bladed_disk.size() != r ||
+        !damping.bladed_disk.unaryExpr(&finite_non_negative).all())
+      throw std::invalid_argument("ReducedIntegrator: the bladed-disk damping must have " +
+                                  std::to_string(r) + " finite entries >= 0");
+    m_q_damped = (damping.bladed_disk.array() != 0.0).any();
+  }
+  if (!finite_non_negative(m_casing_damping.alpha) || !finite_non_negative(m_casing_damping.beta))
+    throw std::invalid_argument(
+        "ReducedIntegrator: the casing's Rayleigh alpha and beta must be finite and >= 0");
+  m_c_damped = m_casing_damping.any();
+
+  // A = M^ + dt/2 C^ (M^ undamped), factorized once.
+  Eigen::MatrixXd a_q = m_mq;
+  if (m_q_damped) {
+    m_cq = damping.bladed_disk;
+    a_q.diagonal() += 0.5 * dt * m_cq;
+  }
+  const Eigen::LLT<Eigen::MatrixXd> mq_factor(a_q);
   if (mq_factor.info() != Eigen::Success)
-    throw ReducedIntegrationError(
-        "reduced integrator: the reduced mass matrix is not positive definite");
+    throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
+                                  (m_q_damped ? " plus dt/2 C^" : "") +
+                                  " is not positive definite");
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_aq = mq_factor.solve(m_kq);
-  m_mc_factor.compute(casing.mass);
+  if (m_q_damped) m_bq = dt * (m_mq_inverse * m_cq.asDiagonal());
+
+  // A_c = M_c + dt/2 (alpha M_c + beta K_c) (M_c undamped).
+  const Eigen::SparseMatrix<double> a_c =
+      m_c_damped
+          ? Eigen::SparseMatrix<double>((1.0 + 0.5 * dt * m_casing_damping.alpha) * casing.mass +
+                                        (0.5 * dt * m_casing_damping.beta) * casing.stiffness)
+          : casing.mass;
+  m_mc_factor.compute(a_c);
   // Eigen's LDL^T flags only zero pivots: positive definite means every D_jj > 0.
   if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
-    throw ReducedIntegrationError(
-        "reduced integrator: the casing mass matrix is not positive definite");
+    throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
+                                  (m_c_damped ? " plus dt/2 C_c" : "") +
+                                  " is not positive definite");
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
   const int nc = casing.n_dofs();
   m_mc_order.resize(nc);
@@ -33,17 +75,22 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   m_force = Eigen::VectorXd::Zero(nc);
   m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
   m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
+  if (m_c_damped) m_c_delta = m_c_damping = Eigen::VectorXd::Zero(nc);
 }
 
 double ReducedIntegrator::casing_flops_per_step() const {
   const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
-  return 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l +
-         5.0 * static_cast<double>(m_kc.rows());
+  const auto n = static_cast<double>(m_kc.rows());
+  double flops = 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l + 5.0 * n;
+  if (m_c_damped) flops += 4.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 10.0 * n;
+  return flops;
 }
 
 double ReducedIntegrator::flops_per_step() const {
   const auto r = static_cast<double>(m_kq.rows());
-  return 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
+  double flops = 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
+  if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
+  return flops;
 }
 
 double ReducedIntegrator::energy() const {
@@ -64,11 +111,38 @@ void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casin
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
+  start(casing_force, Eigen::VectorXd::Zero(m_kq.rows()));
+}
+
+void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
+                              const Eigen::Ref<const Eigen::VectorXd>& q0) {
+  if (q0.size() != m_kq.rows())
+    throw std::invalid_argument("ReducedIntegrator::start: q0 has " + std::to_string(q0.size()) +
+                                " entries, the reduced model " + std::to_string(m_kq.rows()));
   set_force(casing_force);
   m_n = 0;
-  m_q = m_q_prev = Eigen::VectorXd::Zero(m_kq.rows());
+  m_q = q0;
+  if (q0.isZero(0.0)) {
+    m_q_prev = m_q;
+  } else {
+    // q_{-1} = q0 + dt^2/2 M^-1 (-K^ q0): at rest, with M^ itself (not A).
+    const Eigen::LLT<Eigen::MatrixXd> mass(m_mq);
+    if (mass.info() != Eigen::Success)
+      throw ReducedIntegrationError(
+          "reduced integrator: the reduced mass matrix is not positive definite");
+    m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
+  }
   m_c = Eigen::VectorXd::Zero(m_kc.rows());
-  m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
+  if (m_c_damped) {
+    // At rest c_{-1} = dt^2/2 M_c^-1 F with M_c itself (not A_c), so c_1 = c_{-1}.
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass(m_mc);
+    if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
+      throw ReducedIntegrationError(
+          "reduced integrator: the casing mass matrix is not positive definite");
+    m_c_prev = 0.5 * m_dt * m_dt * mass.solve(m_force);
+  } else {
+    m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
+  }
   m_contact.evaluate(m_q, m_q, m_c, m_c, m_dt, 0.0, m_tips);
   m_predicted = m_tips;
   m_gap.resize(m_contact.n_tips());
@@ -76,7 +150,7 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
     m_gap(k) = m_tips[k].gap;
   m_lambda = Eigen::VectorXd::Zero(m_contact.n_tips());
   m_initial_energy = energy();
-  m_external_work = m_contact_work = 0.0;
+  m_external_work = m_contact_work = m_damping_work = 0.0;
 }
 
 double ReducedIntegrator::flexibility(const TipContact& i, const TipContact& j) const {
@@ -171,6 +245,14 @@ void ReducedIntegrator::predict_casing() {
   const int n = static_cast<int>(m_c.size());
   const double dt2 = m_dt * m_dt;
   m_kc_rows.multiply(m_c, m_kc_c);
+  if (m_c_damped) {
+    // K_c c_n + C_c (c_n - c_{n-1}) / dt, C_c = alpha M_c + beta K_c.
+    m_c_delta = m_c - m_c_prev;
+    m_c_damping.noalias() = m_mc * m_c_delta;
+    m_c_damping *= m_casing_damping.alpha;
+    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
+    m_kc_c += m_c_damping / m_dt;
+  }
   for (int i = 0; i < n; ++i)
     m_casing_work(m_mc_order[i]) = m_force_zero ? -m_kc_c(i) : m_force(i) - m_kc_c(i);
   m_mc_factor.matrixL().solveInPlace(m_casing_work);
@@ -180,10 +262,30 @@ void ReducedIntegrator::predict_casing() {
     m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * m_casing_work(m_mc_order[j]);
 }
 
+double ReducedIntegrator::step_damping_work() {
+  double work = 0.0;
+  if (m_q_damped) {
+    m_dq = m_q_next - m_q_prev;
+    work += m_dq.dot(m_cq.cwiseProduct(m_dq));
+  }
+  if (m_c_damped) {
+    m_c_delta = m_c_next - m_c_prev;
+    m_c_damping.noalias() = m_mc * m_c_delta;
+    m_c_damping *= m_casing_damping.alpha;
+    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
+    work += m_c_delta.dot(m_c_damping);
+  }
+  return work / (4.0 * m_dt);
+}
+
 StepReport ReducedIntegrator::step() {
   const double dt2 = m_dt * m_dt;
   m_q_next = 2.0 * m_q - m_q_prev;
   m_q_next.noalias() -= dt2 * (m_aq * m_q);
+  if (m_q_damped) { // - dt A^-1 C^ (q_n - q_{n-1})
+    m_dq = m_q - m_q_prev;
+    m_q_next.noalias() -= m_bq * m_dq;
+  }
   predict_casing();
   const double t_next = (m_n + 1) * m_dt;
   m_contact.evaluate(m_q_next, m_q, m_c_next, m_c, m_dt, t_next, m_predicted);
@@ -215,6 +317,8 @@ StepReport ReducedIntegrator::step() {
     if (m_lambda(j) != 0.0)
       m_contact_work +=
           0.5 * m_lambda(j) * direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
+
+  if (m_q_damped || m_c_damped) m_damping_work += step_damping_work();
 
   m_q_prev.swap(m_q);
   m_q.swap(m_q_next);

@@ -21,6 +21,24 @@
 // costs nothing per step.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
+//
+// Damping (SPEC §8; ReducedDamping): C^ = diag(c) on q (modal_damping.hpp:
+// 2 zeta omega_i on the kept modes, 0 on the boundary) and Rayleigh
+// C_c = alpha M_c + beta K_c on the casing, both with the centred velocity
+// (x_{n+1} - x_{n-1}) / (2 dt):
+//   M (x_{n+1} - 2 x_n + x_{n-1}) / dt^2 + C (x_{n+1} - x_{n-1}) / (2 dt) + K x_n = F + R,
+// that is, with A = M + dt/2 C (factorized once in place of M, so the
+// contact flexibility W and the correction use A^-1),
+//   x~ = 2 x_n - x_{n-1} - dt^2 A^-1 K x_n - dt A^-1 C (x_n - x_{n-1}) + dt^2 A^-1 F.
+// Stability: the discrete energy E_{n+1/2} = 1/2 v^T (M - dt^2/4 K) v +
+// 1/2 xbar^T K xbar (xbar = (x_n + x_{n+1})/2, v = (x_{n+1} - x_n)/dt) is
+// positive definite iff dt < 2/omega_max, and a force-free step changes it
+// by -(x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt) <= 0: the critical
+// step stays 2/omega_max for every C >= 0, proportional or not (C^ is not
+// proportional: M^ couples the modes to the boundary). That last term,
+// summed step by step from the damping force the scheme applies, is W_damp:
+// E = E_0 + W_ext + W_contact - W_damp to round-off. Without damping A = M
+// and the step is the undamped one, operation for operation.
 
 #include <stdexcept>
 #include <vector>
@@ -31,6 +49,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include "case_file.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "sparse_rows.hpp"
@@ -42,15 +61,29 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+/// The damping of a reduced run: empty or zero = undamped.
+struct ReducedDamping {
+  Eigen::VectorXd bladed_disk; ///< diag(C^), r entries >= 0 (modal_damping), or empty
+  RayleighDamping casing;      ///< alpha, beta >= 0 of the full casing
+};
+
 class ReducedIntegrator {
 public:
-  /// `contact` must outlive the integrator (not owned).
+  /// `contact` must outlive the integrator (not owned). Throws
+  /// std::invalid_argument for a damping of the wrong size, negative or not
+  /// finite, ReducedIntegrationError when M^ + dt/2 C^ or the casing's
+  /// M_c + dt/2 C_c is not positive definite.
   ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
-                    const ReducedTipContact& contact);
+                    const ReducedTipContact& contact,
+                    const ReducedDamping& damping = ReducedDamping{});
 
   /// From rest under the casing force f0 at t = 0; f0 is held for the steps
   /// that follow until set_force changes it.
   void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
+  /// The same from rest at the bladed-disk coordinates q0 (a free vibration:
+  /// q_{-1} = q0 - dt^2/2 M^-1 K^ q0, so (q_1 - q_{-1}) / (2 dt) = 0).
+  void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
+             const Eigen::Ref<const Eigen::VectorXd>& q0);
   /// Holds F (n_c entries, [N]) as the casing force of every following step.
   void set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
   /// Step n -> n+1 under the held force F_n.
@@ -66,12 +99,18 @@ public:
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
+  /// W_damp up to step n-1 [J], >= 0 (0 undamped).
+  double damping_work() const { return m_damping_work; }
   /// Flops of a contact-free, force-free step: the dense M^-1 K^ q (2 r^2),
   /// 4 r of vector updates, about 64 per tip for the gaps, sliding
-  /// velocities and step report, and the casing's flops (below).
+  /// velocities and step report, and the casing's flops (below). Damped,
+  /// also dt A^-1 C^ (q_n - q_{n-1}) (2 r^2) and about 5 r for the
+  /// difference and W_damp.
   double flops_per_step() const;
   /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
   /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
+  /// Damped, also M_c and K_c times a difference twice (force and W_damp:
+  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c.
   double casing_flops_per_step() const;
 
 private:
@@ -83,15 +122,23 @@ private:
   void solve_contact(const std::vector<TipContact>& tips);
   /// m_c_next = c~ from m_c, m_c_prev and the held force.
   void predict_casing();
+  /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
+  /// over both parts, with m_q_next, m_c_next = x_{n+1}.
+  double step_damping_work();
 
   Eigen::MatrixXd m_kq;
   Eigen::MatrixXd m_mq;
-  Eigen::MatrixXd m_mq_inverse;
-  Eigen::MatrixXd m_aq; ///< M^-1 K^
+  Eigen::MatrixXd m_mq_inverse; ///< A^-1 = (M^ + dt/2 C^)^-1 (M^-1 undamped)
+  Eigen::MatrixXd m_aq;         ///< A^-1 K^
+  Eigen::VectorXd m_cq;         ///< diag(C^) (empty undamped)
+  Eigen::MatrixXd m_bq;         ///< dt A^-1 C^ (damped only)
+  RayleighDamping m_casing_damping;
+  bool m_q_damped = false;
+  bool m_c_damped = false;
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_kc;
   SparseRows m_kc_rows; ///< K_c for the per-step product (the full run's row kernels)
   Eigen::SparseMatrix<double, Eigen::RowMajor> m_mc;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor; ///< of A_c = M_c + dt/2 C_c
   std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
   Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
   Eigen::MatrixXd m_mc_inverse;
@@ -107,6 +154,7 @@ private:
   Eigen::VectorXd
       m_casing_work;      ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
   Eigen::VectorXd m_kc_c; ///< K_c c_n (work)
+  Eigen::VectorXd m_c_delta, m_c_damping; ///< damped casing: c difference, C_c times it (work)
   Eigen::VectorXd m_gap, m_lambda;
   std::vector<TipContact> m_tips;      ///< tips at the current state
   std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step
@@ -120,6 +168,7 @@ private:
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;
+  double m_damping_work = 0.0;
 };
 
 } // namespace rsi

@@ -6,6 +6,7 @@
 #include "casing.hpp"
 #include "casing_forcing.hpp"
 #include "modal_analysis.hpp"
+#include "modal_damping.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_integrator.hpp"
 #include "reduction.hpp"
@@ -42,7 +43,13 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
                   options.run.force, s);
 
   const ReducedTipContact contact(bd, out.basis, casing, c);
-  ReducedIntegrator integrator(out.basis, casing, c.time.step, contact);
+  // Modal ratio on the kept modes, Rayleigh on the full casing; with central
+  // damping the stable step is 2/omega_max for any C >= 0 (reduced_integrator.hpp):
+  // the check above stands.
+  ReducedDamping damping;
+  damping.bladed_disk = modal_damping(out.basis, c.damping.modal_ratio);
+  damping.casing = c.damping.rayleigh;
+  ReducedIntegrator integrator(out.basis, casing, c.time.step, contact, damping);
   s.flops_per_step = integrator.flops_per_step();
   s.casing_flops_per_step = integrator.casing_flops_per_step();
   const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
@@ -53,7 +60,7 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
   auto state = [&]() {
     return StepState{integrator.step_index(), integrator.time(),          integrator.gap(),
                      integrator.lambda(),     integrator.external_work(), integrator.contact_work(),
-                     integrator.casing()};
+                     integrator.casing(),     integrator.damping_work()};
   };
   Eigen::VectorXd u(bd.n_dofs());
   auto record_field = [&]() {

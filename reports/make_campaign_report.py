@@ -46,7 +46,9 @@ def history(name):
     gaps = [[float(d[f"gap_{k}"]) for d in data] for k in range(1, blades + 1)]
     lams = [[float(d[f"lambda_{k}"]) for d in data] for k in range(1, blades + 1)]
     energy = [float(d["energy"]) for d in data]
-    work = [float(d["external_work"]) + float(d["contact_work"]) for d in data]
+    # W_ext + W_contact - W_damp (damping_work: 0 undamped; absent in older histories).
+    work = [float(d["external_work"]) + float(d["contact_work"]) - float(d.get("damping_work", 0.0))
+            for d in data]
     return t, gaps, lams, energy, work
 
 
@@ -141,7 +143,7 @@ for name in traced:
     axes[2].plot(t, [abs(e[i] - e0 - w[i]) for i in range(len(t))], lw=0.8, label=name)
 axes[0].set_ylabel("max penetration [m]")
 axes[1].set_ylabel("max |lambda g| [N m]")
-axes[2].set_ylabel("|E - E0 - W_ext - W_c| [J]")
+axes[2].set_ylabel("|E - E0 - W_ext - W_c + W_d| [J]")
 axes[2].set_xlabel("time [ms]")
 for ax in axes:
     ax.grid(alpha=0.3)
@@ -156,7 +158,7 @@ for name in traced:
     t, _, _, e, w = history(name)
     ax.plot(t, e, lw=1.2, label=f"{name}: energy E")
 ax.plot(t_ref, [ref["summary"]["initial_energy"] + x for x in w_ref], "k--", lw=0.8,
-        label="full-0: E0 + W_ext + W_contact")
+        label="full-0: E0 + W_ext + W_contact - W_damp")
 ax.set_xlabel("time [ms]")
 ax.set_ylabel("[J]")
 ax.grid(alpha=0.3)

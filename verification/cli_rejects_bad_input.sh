@@ -90,6 +90,13 @@ variant("no-campaign", lambda d: d.pop("campaign"))
 variant("campaign-too-many", lambda d: d.update(campaign=[{"method": "cb", "modes": [0, 700]}]))
 variant("campaign-guyan-modes", lambda d: d.update(campaign=[{"method": "guyan", "modes": [3]}]))
 variant("campaign-method", lambda d: d.update(campaign=[{"method": "modal", "modes": [0]}]))
+variant("damping-alpha", lambda d: d.update(damping={"rayleigh": {"alpha": -1.0, "beta": 0.0}}))
+variant("damping-beta", lambda d: d.update(damping={"rayleigh": {"alpha": 1.0, "beta": "small"}}))
+variant("damping-no-beta", lambda d: d.update(damping={"rayleigh": {"alpha": 1.0}}))
+variant("damping-ratio", lambda d: d.update(damping={"modal_ratio": 1.0}))
+variant("damping-ratio-negative", lambda d: d.update(damping={"modal_ratio": -0.01}))
+variant("damping-unknown", lambda d: d.update(damping={"zeta": 0.01}))
+variant("damping-number", lambda d: d.update(damping=0.01))
 PY
 cp "$good" "$work/unreadable.json"
 chmod 000 "$work/unreadable.json"
@@ -169,6 +176,15 @@ expect 2 "--modes: Craig-Chang-Martinez takes 0 to 638" -- "$rsi" simulate "$goo
 expect 2 "--modes: Guyan reduction keeps no modes" -- "$rsi" simulate "$good" --method guyan --modes 2 --out "$work/out"
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" simulate "$good" --method cb --modes 1e3 --out "$work/out"
 expect 2 "--full-field: only for the reduced methods" -- "$rsi" simulate "$good" --method full --full-field --out "$work/out"
+
+# damping (issue 12): every key named with its range
+expect 2 "damping.rayleigh.alpha': must be in [0, inf) 1/s, got -1.0" -- "$rsi" simulate "$work/damping-alpha.json" --out "$work/out"
+expect 2 "damping.rayleigh.beta': must be a number in [0, inf) s, got \"small\"" -- "$rsi" simulate "$work/damping-beta.json" --out "$work/out"
+expect 2 "damping.rayleigh.beta': missing (required)" -- "$rsi" simulate "$work/damping-no-beta.json" --out "$work/out"
+expect 2 "damping.modal_ratio': must be in [0, 1), got 1.0" -- "$rsi" simulate "$work/damping-ratio.json" --method cb --modes 10 --out "$work/out"
+expect 2 "damping.modal_ratio': must be in [0, 1), got -0.01" -- "$rsi" simulate "$work/damping-ratio-negative.json" --out "$work/out"
+expect 2 "damping.zeta': unknown key" -- "$rsi" simulate "$work/damping-unknown.json" --out "$work/out"
+expect 2 "key 'damping': must be a JSON object" -- "$rsi" simulate "$work/damping-number.json" --out "$work/out"
 
 # campaign
 expect 2 "--jobs: must be an integer in [1, 64], got '0'" -- "$rsi" campaign "$good" --jobs 0 --out "$work/out"

@@ -34,6 +34,7 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
       fixed = lowest_modes(k_ii, m_ii, eta, solver);
     }
     t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
+    basis.mode_omega = fixed.omega_squared.cwiseSqrt();
   } else {
     psi = constraint_modes(stiffness, p);
   }

@@ -54,6 +54,7 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
       throw ReductionError(message.str());
     }
     phi1 = all.shapes.leftCols(psi);
+    out.mode_omega = all.omega_squared.head(psi).cwiseSqrt();
     const Eigen::MatrixXd phi2 = all.shapes.rightCols(n - psi);
     r.value = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
               take_rows(phi2, p.boundary).transpose();
@@ -71,6 +72,7 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
     }
     if (psi > 0) {
       phi1 = free.shapes;
+      out.mode_omega = free.omega_squared.cwiseSqrt();
       r.value -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
                  take_rows(phi1, p.boundary).transpose();
     }
@@ -139,6 +141,7 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
       residual_flexibility_transformation(stiffness, mass, p, psi, "Craig-Chang-Martinez");
   basis.transformation = std::move(t.transformation);
   basis.cond_rb = t.cond_rb;
+  basis.mode_omega = std::move(t.mode_omega);
   finish_basis(stiffness, mass, nb, 0, start, basis);
   return basis;
 }

@@ -33,6 +33,7 @@ namespace rsi {
 struct ResidualFlexibilityTransformation {
   Eigen::MatrixXd transformation; ///< T, n x (n_B + psi)
   double cond_rb = 0.0;           ///< cond(R_B)
+  Eigen::VectorXd mode_omega;     ///< omega_i of the psi free modes Phi_1 [rad/s]
 };
 
 /// T and cond(R_B) for psi in [0, n - n_B] (not checked here: the callers

@@ -26,6 +26,7 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
       residual_flexibility_transformation(stiffness, mass, p, psi, "MacNeal");
   basis.transformation = std::move(t.transformation);
   basis.cond_rb = t.cond_rb;
+  basis.mode_omega = std::move(t.mode_omega);
   // K^ = T^T K T as CCM; finish_basis also forms CCM's T^T M T, which
   // MacNeal replaces: the kept modes' unit mass, the residual mass dropped.
   finish_basis(stiffness, mass, nb, 0, start, basis);

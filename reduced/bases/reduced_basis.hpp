@@ -27,6 +27,10 @@ struct ReducedBasis {
   Eigen::MatrixXd mass;           ///< M^ = T^T M T, r x r (MacNeal: diag(0_B, I_psi))
   /// Position in q of each boundary dof, in the order of the partition's boundary.
   std::vector<int> boundary_position;
+  /// omega_i [rad/s] of the kept modes (CB: fixed-interface, CCM and MacNeal:
+  /// free-interface), in the order of their coordinates in q (the positions
+  /// that are not boundary positions); empty for Guyan. For modal damping.
+  Eigen::VectorXd mode_omega;
   /// M^ is zero on the boundary rows and columns (MacNeal): (K^, M^) has
   /// n_B infinite eigenvalues, the boundary follows a static balance.
   bool massless_boundary = false;

@@ -86,6 +86,24 @@ Case parse_case(const json& document, const std::string& source) {
   c.time.output_every = time.integer("output_every", 1, 100000000);
   time.finish();
 
+  // Optional: "damping": {"rayleigh": {"alpha": .., "beta": ..}, "modal_ratio": ..}.
+  top.claim("damping");
+  if (document.contains("damping")) {
+    ObjectReader damping = top.object("damping");
+    damping.optional_note("note");
+    damping.claim("rayleigh");
+    if (document.at("damping").is_object() && document.at("damping").contains("rayleigh")) {
+      ObjectReader rayleigh = damping.object("rayleigh");
+      c.damping.rayleigh.alpha = rayleigh.number("alpha", {0.0, inf, false, true, "1/s"});
+      c.damping.rayleigh.beta = rayleigh.number("beta", {0.0, inf, false, true, "s"});
+      rayleigh.finish();
+    }
+    damping.claim("modal_ratio");
+    if (document.at("damping").contains("modal_ratio"))
+      c.damping.modal_ratio = damping.number("modal_ratio", {0.0, 1.0, false, true, ""});
+    damping.finish();
+  }
+
   // Optional: "campaign": [{"method": "cb", "modes": [0, 10]}, ...].
   top.claim("campaign");
   if (document.contains("campaign")) {

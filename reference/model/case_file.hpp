@@ -73,6 +73,24 @@ struct TimeStepping {
   int output_every = 0;  ///< one history row every this many steps
 };
 
+/// Rayleigh damping C = alpha M + beta K: the full models, and the casing
+/// of reduced runs (SPEC §8). Modal ratio of mode i: alpha/(2 omega_i) +
+/// beta omega_i / 2.
+struct RayleighDamping {
+  double alpha = 0.0; ///< [1/s], >= 0
+  double beta = 0.0;  ///< [s], >= 0
+  bool any() const { return alpha != 0.0 || beta != 0.0; }
+};
+
+/// The optional "damping" object of the case file; absent = all zero
+/// (undamped, the first round's behaviour bit for bit).
+struct Damping {
+  RayleighDamping rayleigh;
+  /// zeta of every kept mode of a reduced bladed disk (fixed-interface for
+  /// CB, free-interface for CCM), none on its boundary coordinates; in [0, 1).
+  double modal_ratio = 0.0;
+};
+
 /// One reduced run of the campaign (SPEC §4 V6): a method and a mode count.
 struct CampaignRun {
   std::string method; ///< "cb", "ccm" or "guyan"
@@ -87,6 +105,7 @@ struct Case {
   OperatingPoint operating_point;
   Forcing forcing;
   TimeStepping time;
+  Damping damping;
   std::vector<CampaignRun> campaign; ///< empty when the file has no campaign
 };
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include <Eigen/SparseCholesky>
+
 namespace rsi {
 
 namespace {
@@ -19,14 +21,29 @@ const Eigen::SparseMatrix<double>& checked_mass(const Eigen::SparseMatrix<double
   return mass;
 }
 
+/// A = M + dt/2 C = (1 + alpha dt/2) M + (beta dt/2) K, the matrix the
+/// damped step inverts; M itself (the same object, bit for bit) undamped.
+Eigen::SparseMatrix<double> step_matrix(const Eigen::SparseMatrix<double>& stiffness,
+                                        const Eigen::SparseMatrix<double>& mass, double dt,
+                                        const RayleighDamping& d) {
+  if (!(d.alpha >= 0.0 && d.beta >= 0.0 && std::isfinite(d.alpha) && std::isfinite(d.beta)))
+    throw std::invalid_argument(
+        "CentralDifference: Rayleigh damping alpha and beta must be finite and >= 0");
+  const Eigen::SparseMatrix<double>& m = checked_mass(stiffness, mass, dt);
+  if (!d.any()) return m;
+  return (1.0 + 0.5 * d.alpha * dt) * m + (0.5 * d.beta * dt) * stiffness;
+}
+
 } // namespace
 
 CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
                                      const Eigen::SparseMatrix<double>& mass, double dt,
-                                     const ContactLaw& law)
+                                     const ContactLaw& law, const RayleighDamping& damping)
     : m_dt(dt)
     , m_law(law)
-    , m_mass_factor(checked_mass(stiffness, mass, dt))
+    , m_damping(damping)
+    , m_damped(damping.any())
+    , m_mass_factor(step_matrix(stiffness, mass, dt, damping))
     , m_position(m_mass_factor.position())
     , m_k(m_mass_factor.permuted(stiffness))
     , m_m(m_mass_factor.permuted(mass))
@@ -39,6 +56,7 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
                                   std::to_string(dof) + ", outside the system");
     m_law_positions.push_back(m_position(dof));
   }
+  if (m_damping.alpha > 0.0) m_m_rows = SparseRows(m_m);
 }
 
 void CentralDifference::to_physical(const Eigen::VectorXd& permuted, Eigen::VectorXd& physical,
@@ -94,8 +112,11 @@ double CentralDifference::permuted_dot(const SparseRow& row, const Eigen::Vector
 
 double CentralDifference::flops_per_step() const {
   const double nnz_l = m_mass_factor.nonzeros_l();
-  return 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l +
-         13.0 * static_cast<double>(m_k.rows());
+  const double n = static_cast<double>(m_k.rows());
+  double flops = 2.0 * static_cast<double>(m_k.nonZeros()) + 4.0 * nnz_l + 13.0 * n;
+  if (m_damped) flops += 8.0 * n;
+  if (m_damping.alpha > 0.0) flops += 2.0 * static_cast<double>(m_m.nonZeros());
+  return flops;
 }
 
 double CentralDifference::energy() const {
@@ -118,8 +139,35 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   set_force(f0);
   m_u = Eigen::VectorXd::Zero(n);
   m_u_prev = 0.5 * m_dt * m_dt * m_force;
-  apply_inverse_mass(m_u_prev);
+  if (m_damped) {
+    // At rest v_0 = (u_1 - u_{-1}) / (2 dt) = 0 needs u_{-1} = dt^2/2 M^-1 F_0
+    // with M itself (then u_1 = u_{-1}: the damping force of step 0 is zero),
+    // not A^-1: one solve with a factor of M' made for it.
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass{Eigen::SparseMatrix<double>(m_m)};
+    if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
+      throw IntegrationError("central differences: the mass matrix is not positive definite");
+    m_u_prev = mass.solve(m_u_prev).eval();
+    if (mass.info() != Eigen::Success || !m_u_prev.allFinite())
+      throw IntegrationError("central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed");
+  } else {
+    apply_inverse_mass(m_u_prev);
+  }
   m_ku = Eigen::VectorXd::Zero(n);
+  if (m_damped) {
+    // C' u'_0 = 0 and C' u'_{-1}.
+    m_cu = Eigen::VectorXd::Zero(n);
+    m_cu_prev = Eigen::VectorXd::Zero(n);
+    m_cu_next.resize(n);
+    m_mu.resize(n);
+    if (m_damping.alpha > 0.0) {
+      m_m_rows.multiply(m_u_prev, m_mu);
+      m_cu_prev += m_damping.alpha * m_mu;
+    }
+    if (m_damping.beta > 0.0) {
+      m_k_rows.multiply(m_u_prev, m_mu);
+      m_cu_prev += m_damping.beta * m_mu;
+    }
+  }
   m_x = Eigen::VectorXd::Zero(n);
   m_x_next = Eigen::VectorXd::Zero(n);
   m_velocity = Eigen::VectorXd::Zero(n);
@@ -134,6 +182,7 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   m_initial_energy = energy();
   m_external_work = 0.0;
   m_contact_work = 0.0;
+  m_damping_work = 0.0;
 }
 
 void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd& lambda,
@@ -201,13 +250,29 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
                          std::to_string(m_n + 1));
 }
 
+void CentralDifference::add_damping_work() {
+  // Here m_u = u'_{n+1}, m_predicted = u'_{n-1}, m_ku = K'u'_{n+1},
+  // m_cu = C'u'_n, m_cu_prev = C'u'_{n-1}. The damping force of step n is
+  // C (u_{n+1} - u_{n-1}) / (2 dt); its work is that force times
+  // (u_{n+1} - u_{n-1}) / 2.
+  m_cu_next = m_damping.beta * m_ku;
+  if (m_damping.alpha > 0.0) {
+    m_m_rows.multiply(m_u, m_mu);
+    m_cu_next += m_damping.alpha * m_mu;
+  }
+  m_damping_work += (0.25 / m_dt) * (m_u - m_predicted).dot(m_cu_next - m_cu_prev);
+  m_cu_prev.swap(m_cu); // C'u'_n
+  m_cu.swap(m_cu_next); // C'u'_{n+1}
+}
+
 StepReport CentralDifference::step() {
   const double dt2 = m_dt * m_dt;
   if (m_forced)
     m_predicted = m_force - m_ku;
   else
     m_predicted = -m_ku;
-  apply_inverse_mass(m_predicted);
+  if (m_damped) m_predicted -= (m_cu - m_cu_prev) / m_dt; // C (u_n - u_{n-1}) / dt
+  apply_inverse_mass(m_predicted);                        // A^-1, A = M undamped
   m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
   const double t_next = (m_n + 1) * m_dt;
   to_physical(m_predicted, m_x_next, m_velocity);
@@ -229,6 +294,7 @@ StepReport CentralDifference::step() {
   m_u_prev.swap(m_u);
   m_u.swap(m_predicted);
   m_k_rows.multiply(m_u, m_ku);
+  if (m_damped) add_damping_work();
   ++m_n;
 
   // Monitors at the corrected state (SPEC V5).

@@ -10,14 +10,41 @@
 //   corrector   u_{n+1} = u~ + dt^2 M^-1 D^T lambda,  R_n = D^T lambda
 // started from rest: u_0 = 0, u_{-1} = dt^2/2 M^-1 F_0.
 //
+// Rayleigh damping C = alpha M + beta K (SPEC §8; alpha, beta >= 0) enters
+// with the centred velocity (u_{n+1} - u_{n-1}) / (2 dt), the scheme
+//   M (u_{n+1} - 2 u_n + u_{n-1}) / dt^2 + C (u_{n+1} - u_{n-1}) / (2 dt) + K u_n = F_n + R_n.
+// With A = M + dt/2 C and u_{n+1} - u_{n-1} = (u_{n+1} - 2 u_n + u_{n-1}) + 2 (u_n - u_{n-1})
+// it is the undamped step with A in place of M and one more force:
+//   u~ = 2 u_n - u_{n-1} + dt^2 A^-1 (F_n - K u_n - C (u_n - u_{n-1}) / dt),
+//   u_{n+1} = u~ + dt^2 A^-1 D^T lambda,  W = dt^2 G A^-1 D^T,
+// so A is factorized once in place of M (the contact flexibility W is A's).
+// Without damping A = M and every operation is the first round's (the same
+// bits). Stability, mode i (M, K, C share their modes: zeta_i = alpha /
+// (2 omega_i) + beta omega_i / 2, w = omega_i dt): x_{n+1} = z x_n gives
+//   (1 + zeta_i w) z^2 - (2 - w^2) z + (1 - zeta_i w) = 0,
+// whose roots lie in the closed unit disc, distinct on its circle (Jury:
+// |a0| <= a2, a2 + a1 + a0 = w^2 > 0, a2 - a1 + a0 = 4 - w^2 > 0) for
+// 0 < w < 2, inside it for zeta_i > 0, and one reaches z = -1
+// at w = 2: the critical step stays 2 / omega_i for every zeta_i >= 0, and
+// the check dt < 2 / omega_max stands unchanged. (A
+// lagged velocity (u_n - u_{n-1}) / dt keeps M^-1 but lowers it to
+// (2 / omega_i)(sqrt(1 + zeta_i^2) - zeta_i), which stiffness-proportional
+// damping drives far below the undamped step on the highest modes.) The
+// decay per step is |z|^2 = (1 - zeta_i w) / (1 + zeta_i w), a rate of
+// zeta_i omega_i (1 + (zeta_i w)^2 / 3 + ...): second order in dt.
+//
 // Energy: multiplying the scheme by (u_{n+1} - u_{n-1})/2 gives exactly
 //   E_{n+1/2} - E_{n-1/2} = (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2
+//                           - (u_{n+1} - u_{n-1})^T C (u_{n+1} - u_{n-1}) / (4 dt)
 // with the discrete energy E_{n+1/2} = 1/2 v^T M v + 1/2 u_n^T K u_{n+1},
-// v = (u_{n+1} - u_n)/dt. The works W_ext and W_contact are summed from the
-// right-hand side step by step and E is computed from its definition, so
-// E - E_0 - W_ext - W_contact is round-off unless the scheme is broken.
+// v = (u_{n+1} - u_n)/dt. The works W_ext, W_contact and W_damp (the last
+// term, >= 0) are summed step by step and E is computed from its
+// definition, so E - E_0 - W_ext - W_contact + W_damp is round-off unless
+// the scheme is broken. C u is kept from step to step as alpha M'u + beta
+// K'u (K'u is the predictor's anyway), so the damping costs one product
+// with M' a step (none with alpha = 0).
 //
-// M^-1 is applied through the LDL^T factor of P M P^T (reference/mass_factor:
+// M^-1 (A^-1 when damped) is applied through the LDL^T factor of P M P^T (reference/mass_factor:
 // CHOLMOD's AMD order and factorization, pivots checked, applied by its own
 // triangular solves). The state is kept in the permuted coordinates
 // u' = P u, with K' = P K P^T and M' = P M P^T, so a step applies the factor
@@ -38,6 +65,7 @@
 #include <Eigen/LU>
 #include <Eigen/SparseCore>
 
+#include "case_file.hpp"
 #include "contact_law.hpp"
 #include "history.hpp"
 #include "mass_factor.hpp"
@@ -53,11 +81,14 @@ public:
 
 class CentralDifference {
 public:
-  /// K, M of the whole system (square, same size), time step dt > 0.
-  /// `law` must outlive the integrator (not owned). Throws IntegrationError
-  /// if M is not positive definite.
+  /// K, M of the whole system (square, same size), time step dt > 0,
+  /// Rayleigh damping alpha, beta >= 0 (zero: undamped). `law` must outlive
+  /// the integrator (not owned). Throws IntegrationError if M is not
+  /// positive definite, std::invalid_argument for a negative or non-finite
+  /// damping coefficient.
   CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
-                    const Eigen::SparseMatrix<double>& mass, double dt, const ContactLaw& law);
+                    const Eigen::SparseMatrix<double>& mass, double dt, const ContactLaw& law,
+                    const RayleighDamping& damping = RayleighDamping{});
 
   /// Start from rest under the force f0 at t = 0.
   void start(const Eigen::Ref<const Eigen::VectorXd>& f0);
@@ -78,9 +109,13 @@ public:
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }
+  /// W_damp, the work the damping force took out up to step n-1 (>= 0) [J].
+  double damping_work() const { return m_damping_work; }
   /// Flops of a contact-free step: K'u (2 nnz(K)), L^-1 and L^-T (2 nnz(L)
   /// each), D^-1 (n) and about 12 n of vector updates (force, predictor,
   /// velocity, gathers); the contact geometry of a few tips is left out.
+  /// Damped, also M'u (2 nnz(M), alpha > 0) and about 8 n for C'u, the
+  /// damping force and W_damp (L is then A's factor).
   double flops_per_step() const;
 
 private:
@@ -98,7 +133,10 @@ private:
   double contact_flexibility(const SparseRow& gradient, const SparseRow& direction);
   /// G u for a row G in physical dofs and u in permuted coordinates.
   double permuted_dot(const SparseRow& row, const Eigen::VectorXd& u) const;
-  /// r <- M'^-1 r through the factor of P M P^T.
+  /// W_damp += (u_{n+1} - u_{n-1})^T C (u_{n+1} - u_{n-1}) / (4 dt), after the
+  /// state has moved to u_{n+1}; keeps C'u' for the next step.
+  void add_damping_work();
+  /// r <- A'^-1 r through the factor of P A P^T (A = M undamped).
   void apply_inverse_mass(Eigen::VectorXd& r) { m_mass_factor.solve_in_place(r); }
   /// On the dofs the law reads: physical <- P^T permuted, velocity <-
   /// (physical - u_n) / dt; the other entries are left as they are.
@@ -111,7 +149,9 @@ private:
 
   double m_dt;
   const ContactLaw& m_law;
-  MassFactor m_mass_factor;
+  RayleighDamping m_damping;
+  bool m_damped;                     ///< alpha or beta > 0
+  MassFactor m_mass_factor;          ///< of A = M + dt/2 C (M undamped)
   const Eigen::VectorXi& m_position; ///< u'(m_position(i)) = u(i)
   RowMajorMatrix m_k;                ///< K'
   RowMajorMatrix m_m;                ///< M'
@@ -128,6 +168,12 @@ private:
   Eigen::VectorXd m_u;
   Eigen::VectorXd m_u_prev;
   Eigen::VectorXd m_ku; ///< K' u'_n
+  // Damped runs only: C' u'_n and C' u'_{n-1}, with C' = alpha M' + beta K'.
+  SparseRows m_m_rows;       ///< M', for its product (alpha > 0)
+  Eigen::VectorXd m_mu;      ///< M' u'_{n+1} (work storage)
+  Eigen::VectorXd m_cu;      ///< C' u'_n
+  Eigen::VectorXd m_cu_prev; ///< C' u'_{n-1}
+  Eigen::VectorXd m_cu_next; ///< C' u'_{n+1} (work storage)
   // Work storage, kept to avoid allocations in the step loop.
   Eigen::VectorXd m_force; ///< F' = P F
   bool m_forced = false;   ///< F != 0
@@ -155,6 +201,7 @@ private:
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;
+  double m_damping_work = 0.0;
 };
 
 } // namespace rsi

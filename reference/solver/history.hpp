@@ -35,6 +35,7 @@ struct HistoryRow {
   double energy = 0.0;           ///< discrete energy E_{n-1/2} [J]
   double external_work = 0.0;    ///< W_ext up to step n-1 [J]
   double contact_work = 0.0;     ///< W_contact up to step n-1 [J]
+  double damping_work = 0.0;     ///< W_damp up to step n-1, >= 0 [J] (0 undamped)
 };
 
 /// Receives each history row as it is produced, in order (streamed output).
@@ -48,6 +49,7 @@ struct History {
   std::vector<double> energy;          ///< discrete energy E_{n-1/2} [J]
   std::vector<double> external_work;   ///< W_ext up to step n-1 [J]
   std::vector<double> contact_work;    ///< W_contact up to step n-1 [J]
+  std::vector<double> damping_work;    ///< W_damp up to step n-1 [J]
 
   int n_rows() const { return static_cast<int>(time.size()); }
 
@@ -59,6 +61,7 @@ struct History {
     energy.push_back(row.energy);
     external_work.push_back(row.external_work);
     contact_work.push_back(row.contact_work);
+    damping_work.push_back(row.damping_work);
   }
 };
 
@@ -86,12 +89,13 @@ struct RunSummary {
   int sliding_reversals = 0;          ///< (step, contact) pairs where sliding changed sign
   double initial_energy = 0.0;        ///< [J]
   double max_energy = 0.0;            ///< [J]
-  double energy_balance_error = 0.0;  ///< max_n |E_n - E_0 - W_ext - W_contact| [J]
-  double energy_scale = 0.0;          ///< max_n max(E_n, |W_ext|, |W_contact|) [J]
+  double energy_balance_error = 0.0;  ///< max_n |E_n - E_0 - W_ext - W_contact + W_damp| [J]
+  double energy_scale = 0.0;          ///< max_n max(E_n, |W_ext|, |W_contact|, W_damp) [J]
   double final_external_work = 0.0;
   double final_contact_work = 0.0;
-  int max_active = 0;          ///< most contacts active at once
-  int first_contact_step = -1; ///< first step with any lambda > 0 (-1: none)
+  double final_damping_work = 0.0; ///< W_damp at the last row (0 undamped) [J]
+  int max_active = 0;              ///< most contacts active at once
+  int first_contact_step = -1;     ///< first step with any lambda > 0 (-1: none)
   /// [first, last] step times with lambda_1 > 0: one entry per contact
   /// interval of blade 1 (not per step), so it grows with the number of
   /// separate contacts, never with the run's length alone.

@@ -33,7 +33,9 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
                   options.force, s);
 
   const TipCasingContact law(bd, casing, c);
-  CentralDifference cd(k, m, c.time.step, law);
+  // Rayleigh damping of both parts; with central damping (central_difference.hpp)
+  // the stable step is 2/omega_max for any alpha, beta >= 0: the check above stands.
+  CentralDifference cd(k, m, c.time.step, law, c.damping.rayleigh);
   s.flops_per_step = cd.flops_per_step();
   Eigen::VectorXd forcing = Eigen::VectorXd::Zero(k.rows());
   forcing.tail(casing.n_dofs()) = casing_forcing(casing, c.forcing);
@@ -52,7 +54,8 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
         cd.external_work(),
         cd.contact_work(),
         with_casing ? Eigen::Ref<const Eigen::VectorXd>(cd.displacement().tail(casing.n_dofs()))
-                    : Eigen::Ref<const Eigen::VectorXd>(not_needed)};
+                    : Eigen::Ref<const Eigen::VectorXd>(not_needed),
+        cd.damping_work()};
   };
   const Clock::time_point integration_start = Clock::now();
   bool forced = forcing_active(c.forcing, 0.0, s.dt);

@@ -36,8 +36,8 @@ RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& op
 }
 
 void RunMonitor::add_row(const StepState& state, double energy) {
-  const HistoryRow row{state.time, state.gap,           state.lambda,
-                       energy,     state.external_work, state.contact_work};
+  const HistoryRow row{state.time,          state.gap,          state.lambda,      energy,
+                       state.external_work, state.contact_work, state.damping_work};
   if (m_options.history_sink)
     m_options.history_sink(row);
   else
@@ -45,6 +45,7 @@ void RunMonitor::add_row(const StepState& state, double energy) {
   ++m_n_rows;
   m_last_external_work = state.external_work;
   m_last_contact_work = state.contact_work;
+  m_last_damping_work = state.damping_work;
 }
 
 bool RunMonitor::stop(const std::string& status) {
@@ -106,11 +107,11 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
   const double e = energy();
   add_row(state, e);
   s.max_energy = std::max(s.max_energy, e);
-  s.energy_scale = std::max(
-      {s.energy_scale, std::abs(e), std::abs(state.external_work), std::abs(state.contact_work)});
+  s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(state.external_work),
+                             std::abs(state.contact_work), std::abs(state.damping_work)});
   s.energy_balance_error =
-      std::max(s.energy_balance_error,
-               std::abs(e - s.initial_energy - state.external_work - state.contact_work));
+      std::max(s.energy_balance_error, std::abs(e - s.initial_energy - state.external_work -
+                                                state.contact_work + state.damping_work));
   if (!std::isfinite(e))
     return stop("blow-up: non-finite energy at step " + std::to_string(state.step) +
                 " (t = " + std::to_string(state.time) + " s)");
@@ -132,6 +133,7 @@ void RunMonitor::finish(double integration_seconds, double wall_seconds) {
   if (m_n_rows > 0) {
     s.final_external_work = m_last_external_work;
     s.final_contact_work = m_last_contact_work;
+    s.final_damping_work = m_last_damping_work;
   }
 }
 

@@ -65,6 +65,7 @@ struct StepState {
   /// Casing dofs at t_{n+1}; read only when RunMonitor::needs_casing() says
   /// so, and may be empty otherwise.
   Eigen::Ref<const Eigen::VectorXd> casing;
+  double damping_work = 0.0; ///< W_damp (0 undamped)
 };
 
 /// Throws StabilityError unless dt < 2 / omega_max or forced; fills the
@@ -106,6 +107,7 @@ private:
   int m_n_rows = 0;
   double m_last_external_work = 0.0; ///< of the last row
   double m_last_contact_work = 0.0;  ///< of the last row
+  double m_last_damping_work = 0.0;  ///< of the last row
 };
 
 } // namespace rsi
