@@ -89,8 +89,12 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
 
   CoulombGaussSeidelReport report;
   for (int sweep = 1; sweep <= m_options.max_sweeps; ++sweep) {
-    m_y.noalias() = w * lambda;
-    m_y += predicted;
+    // y = [g~; s~] + W lambda from scratch, over the contacts that carry a
+    // force only (most are open in a rotor/stator step).
+    m_y = predicted;
+    for (int c = 0; c < nc; ++c)
+      if (lambda.segment(b * c, b).any())
+        m_y.noalias() += w.middleCols(b * c, b) * lambda.segment(b * c, b);
     double change = 0.0;
     double size = 0.0;
     for (int c = 0; c < nc; ++c) {

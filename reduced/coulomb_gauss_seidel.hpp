@@ -60,7 +60,8 @@
 // than local_violation of its size (a detector of gross trouble, e.g. no
 // local solution for a very large mu; not a certificate tolerance).
 //
-// Cost. Per sweep 2 m^2 flops to refresh y, then per contact 2 (1+d)^2 for
+// Cost. Per sweep 2 m (1+d) flops per contact carrying a force to refresh y
+// (2 m^2 at most), then per contact 2 (1+d)^2 for
 // r_c, the local solve (d = 1: ~60 flops; d = 2: a 4 x 4 companion
 // eigenproblem, ~2 us), and 2 m (1+d) for the update of y when lambda_c
 // changed. Open contacts that stay open change nothing. Setup: one

@@ -283,7 +283,8 @@ Eigen::MatrixXd random_w(int n, int rows, std::mt19937& rng) {
 }
 
 /// Predicted gaps and slips uniform in [-1, 1] um, a quarter of the gaps
-/// shifted up (open).
+/// shifted up (open), the slips of every third contact scaled by 1e-2 (so
+/// that some closing contacts stick).
 Eigen::VectorXd random_prediction(int nc, int d, std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Eigen::VectorXd q((1 + d) * nc);
@@ -291,6 +292,8 @@ Eigen::VectorXd random_prediction(int nc, int d, std::mt19937& rng) {
     q(i) = 1e-6 * unit(rng);
   for (int c = 0; c < nc; c += 4)
     q((1 + d) * c) += 1e-6;
+  for (int c = 0; c < nc; c += 3)
+    q.segment((1 + d) * c + 1, d) *= 1e-2;
   return q;
 }
 
@@ -410,38 +413,51 @@ void check_certificate(const Eigen::MatrixXd& w, const Eigen::VectorXd& q, int d
                           c.max_stick_residual / dy,
                           cone_bound > 0.0 ? c.max_cone_violation / cone_bound : 0.0,
                           slip_bound > 0.0 ? c.max_slip_residual / slip_bound : 0.0});
-  if (c.n_slip > 0 && mu > 0.0)
+  if (c.n_slip > 0 && mu > 0.0 && least_slip < 1e6 * dy)
     std::printf("  delta_y %.3e m; least |s| of a slip contact %.3e m (%.1e delta_y)\n", dy,
                 least_slip, least_slip / dy);
 }
 
-TEST(CoulombGaussSeidel, RandomWellPosed) {
-  const int n = 30, nc = 8;
-  for (int d : {1, 2}) {
-    for (double mu : {0.0, 0.15, 0.5}) {
+/// `seeds` random problems (n dofs, nc contacts) per d and mu: the
+/// certificate within its bounds; both stick and slip seen when mu > 0.
+void random_well_posed(int n, int nc, const std::vector<int>& ds, const std::vector<double>& mus,
+                       int seeds) {
+  for (int d : ds) {
+    for (double mu : mus) {
       Worst worst;
       int open = 0, stick = 0, slip = 0;
-      for (int seed = 0; seed < 20; ++seed) {
-        std::mt19937 rng(1000 * d + seed);
+      for (int seed = 0; seed < seeds; ++seed) {
+        std::mt19937 rng(1000 * d + 100 * nc + seed);
         const Eigen::MatrixXd w = random_w(n, (1 + d) * nc, rng);
         const Eigen::VectorXd q = random_prediction(nc, d, rng);
-        const std::string name = "random d=" + std::to_string(d) + " mu=" + std::to_string(mu) +
-                                 " seed " + std::to_string(seed);
+        const std::string name = "random nc=" + std::to_string(nc) + " d=" + std::to_string(d) +
+                                 " mu=" + std::to_string(mu) + " seed " + std::to_string(seed);
         const Solved s = solve(w, q, d, mu, name.c_str());
         check_certificate(w, q, d, mu, s, worst);
         open += s.certificate.n_open, stick += s.certificate.n_stick, slip += s.certificate.n_slip;
       }
-      std::printf("d=%d mu=%.2f: at most %d sweeps; worst certificate / bound %.3f; states open "
-                  "%d stick %d slip %d\n",
-                  d, mu, worst.max_sweeps, worst.ratio, open, stick, slip);
+      std::printf("nc=%d d=%d mu=%.2f: at most %d sweeps; worst certificate / bound %.3f; states "
+                  "open %d stick %d slip %d\n",
+                  nc, d, mu, worst.max_sweeps, worst.ratio, open, stick, slip);
       // The cases exercise what they are for: with friction both stick and
-      // slip occur over the 20 seeds (else the certificate checks half the law).
+      // slip occur over the seeds (else the certificate checks half the law).
       if (mu > 0.0) {
         EXPECT_GT(stick, 0);
         EXPECT_GT(slip, 0);
       }
     }
   }
+}
+
+TEST(CoulombGaussSeidel, RandomWellPosed) {
+  random_well_posed(30, 8, {1, 2}, {0.0, 0.15, 0.5}, 20);
+}
+
+// At the sizes of the laws: the 2D default case's 22 tips (d = 1) and the
+// Rotor 37 case's 16 contact nodes (d = 2).
+TEST(CoulombGaussSeidel, RandomAtTheLawsSizes) {
+  random_well_posed(60, 22, {1}, {0.15, 0.5}, 10);
+  random_well_posed(100, 16, {2}, {0.15, 0.5}, 10);
 }
 
 // A warm start at the solution: the first sweep changes nothing beyond
@@ -502,6 +518,7 @@ TEST(CoulombGaussSeidel, SingularBlockHarmlessWhenOpen) {
     const Eigen::MatrixXd w = w_with_zero_normal(d, nc, 1, rng);
     Eigen::VectorXd q = random_prediction(nc, d, rng);
     q((1 + d) * 1) = 1e-6;
+    q(0) = q((1 + d) * 2) = -1e-6; // the others close: contact 1 must stay open among them
     const Solved s = solve(w, q, d, 0.15, "zero normal row, open");
     ASSERT_TRUE(s.report.converged()) << s.report.message;
     EXPECT_EQ(s.state[1], ReducedContactState::open);
