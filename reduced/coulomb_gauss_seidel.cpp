@@ -44,6 +44,24 @@ CoulombGaussSeidel::CoulombGaussSeidel(int d, double mu, const CoulombGaussSeide
                                 ", allowed (0, 1)");
 }
 
+void CoulombGaussSeidel::prepare(const Eigen::Ref<const Eigen::MatrixXd>& w, int c,
+                                 double diagonal) {
+  const int b = 1 + m_d;
+  const int o = b * c;
+  m_block[c].setZero();
+  m_block[c].topLeftCorner(b, b) = w.block(o, o, b, b);
+  if (m_mu == 0.0) {
+    m_regularity[c] = diagonal > 0.0 ? w(o, o) / diagonal : 0.0;
+  } else {
+    const LocalMatrix block = w.block(o, o, b, b);
+    const Eigen::JacobiSVD<LocalMatrix> svd(block);
+    const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> sigma = svd.singularValues();
+    m_regularity[c] = sigma(0) > 0.0 ? sigma(b - 1) / sigma(0) : 0.0;
+    if (m_regularity[c] > m_options.singular_tolerance) m_lu[c].compute(block);
+  }
+  m_prepared[c] = 1;
+}
+
 CoulombGaussSeidelReport
 CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
                           const Eigen::Ref<const Eigen::VectorXd>& predicted,
@@ -66,26 +84,14 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
   if (!lambda.allFinite())
     throw std::invalid_argument(where + "lambda (start): entries must be finite");
 
-  // Per contact: the block, its regularity and (mu > 0) its LU factors.
+  // Per contact, prepared when it first closes (most stay open): the block,
+  // its regularity and (mu > 0) its LU factors.
   m_state.assign(nc, ReducedContactState::open);
   m_block.resize(nc);
   m_lu.resize(nc);
   m_regularity.resize(nc);
+  m_prepared.assign(nc, 0);
   const double diagonal = m > 0 ? w.diagonal().cwiseAbs().maxCoeff() : 0.0;
-  for (int c = 0; c < nc; ++c) {
-    const int o = b * c;
-    m_block[c].setZero();
-    m_block[c].topLeftCorner(b, b) = w.block(o, o, b, b);
-    if (m_mu == 0.0) {
-      m_regularity[c] = diagonal > 0.0 ? w(o, o) / diagonal : 0.0;
-    } else {
-      const LocalMatrix block = w.block(o, o, b, b);
-      const Eigen::JacobiSVD<LocalMatrix> svd(block);
-      const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> sigma = svd.singularValues();
-      m_regularity[c] = sigma(0) > 0.0 ? sigma(b - 1) / sigma(0) : 0.0;
-      if (m_regularity[c] > m_options.singular_tolerance) m_lu[c].compute(block);
-    }
-  }
 
   CoulombGaussSeidelReport report;
   for (int sweep = 1; sweep <= m_options.max_sweeps; ++sweep) {
@@ -102,7 +108,9 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
       Eigen::Vector3d current = Eigen::Vector3d::Zero();
       Eigen::Vector3d r = Eigen::Vector3d::Zero();
       current.head(b) = lambda.segment(o, b);
-      r.head(b) = m_y.segment(o, b) - m_block[c].topLeftCorner(b, b) * current.head(b);
+      r.head(b) = m_y.segment(o, b);
+      if (current.any()) r.head(b).noalias() -= w.block(o, o, b, b) * current.head(b);
+      if (r(0) < 0.0 && !m_prepared[c]) prepare(w, c, diagonal);
       if (r(0) < 0.0 && !(m_regularity[c] > m_options.singular_tolerance)) {
         report.status = CoulombSweepStatus::singular_block;
         report.sweeps = sweep;

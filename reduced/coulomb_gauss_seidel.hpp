@@ -65,8 +65,8 @@
 // r_c, the local solve (d = 1: ~60 flops; d = 2: a 4 x 4 companion
 // eigenproblem, ~2 us), and 2 m (1+d) for the update of y when lambda_c
 // changed. Open contacts that stay open change nothing. Setup: one
-// (1+d)-square SVD (regularity) and LU per contact. A warm start (the previous step's lambda)
-// cuts the sweeps.
+// (1+d)-square SVD (regularity) and LU per contact, when it first closes. A warm start (the
+// previous step's lambda) cuts the sweeps.
 
 #include <string>
 #include <vector>
@@ -126,12 +126,16 @@ public:
   const std::vector<ReducedContactState>& states() const { return m_state; }
 
 private:
+  /// Block, regularity and LU of contact c; `diagonal` = max_i |W_ii|.
+  void prepare(const Eigen::Ref<const Eigen::MatrixXd>& w, int c, double diagonal);
+
   int m_d;
   double m_mu;
   CoulombGaussSeidelOptions m_options;
   std::vector<ReducedContactState> m_state;
   std::vector<Eigen::Matrix3d> m_block;               ///< W_cc, leading (1+d) square
   std::vector<Eigen::PartialPivLU<LocalMatrix>> m_lu; ///< LU of W_cc where regular (mu > 0)
+  std::vector<char> m_prepared;                       ///< contact c's block, regularity, LU are set
   std::vector<double> m_regularity; ///< sigma_min/sigma_max (mu > 0) or w_nn/max W_ii (mu = 0)
   Eigen::VectorXd m_y;              ///< [g; s] of the current iterate
 };

@@ -30,6 +30,28 @@ double slip_function(const Eigen::Vector2d& b, const Eigen::Matrix2d& a, double 
   return e(0) * h(1) - e(1) * h(0);
 }
 
+/// Newton's method on f from th (steps capped at pi/8), at most 30 steps;
+/// `converged` (if given) tells whether the last step fell to round-off.
+double polish(const Eigen::Vector2d& b, const Eigen::Matrix2d& a, double th, bool* converged) {
+  if (converged) *converged = false;
+  for (int it = 0; it < 30; ++it) {
+    double df = 0.0;
+    const double f = slip_function(b, a, th, &df);
+    if (f == 0.0) {
+      if (converged) *converged = true;
+      break;
+    }
+    if (df == 0.0) break;
+    const double step = std::max(-M_PI / 8.0, std::min(M_PI / 8.0, f / df));
+    th -= step;
+    if (std::abs(step) <= 2.0 * eps * (1.0 + std::abs(th))) {
+      if (converged) *converged = true;
+      break;
+    }
+  }
+  return th;
+}
+
 /// The slip candidate of direction e (unit, R^d) if its denominator is
 /// positive.
 void add_slip(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, int d, double mu,
@@ -58,11 +80,29 @@ void add_slip(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, int d, double 
 }
 
 /// The slip candidates of d = 2: roots of f (header).
-void add_slip_3d(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, double mu, Candidates& out) {
+void add_slip_3d(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, double mu,
+                 const Eigen::Vector3d& current, Candidates& out) {
   const double rho = -r(0);
   const Eigen::Vector2d rt = r.segment<2>(1);
   const Eigen::Vector2d b = w(0, 0) * rt + rho * w.block<2, 1>(1, 0);
   const Eigen::Matrix2d a = -mu * (rt * w.block<1, 2>(0, 1) + rho * w.block<2, 2>(1, 1));
+  // Warm path: Newton from the current slip direction e = -lambda_t/|lambda_t|.
+  // A converged root with s along e (violation below mu lambda_n: at a root
+  // s/|s| = +e or -e, violation 0 or 2 mu lambda_n up to round-off) is an
+  // exact slip solution, the one continuous with the sweeps; otherwise the
+  // quartic below gives them all.
+  if (current(1) != 0.0 || current(2) != 0.0) {
+    bool converged = false;
+    const double th = polish(b, a, std::atan2(-current(2), -current(1)), &converged);
+    if (converged) {
+      Candidates warm;
+      add_slip(w, r, 2, mu, Eigen::Vector2d(std::cos(th), std::sin(th)), warm);
+      if (warm.n == 1 && warm.item[0].violation < mu * warm.item[0].lambda(0)) {
+        out.add(warm.item[0]);
+        return;
+      }
+    }
+  }
   // The turn th0 = k pi/4 with the largest |f(th0 + pi)|.
   int best = 0;
   double best_f = -1.0;
@@ -98,15 +138,7 @@ void add_slip_3d(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, double mu, 
       seeds[n_seeds++] = M_PI / 4.0 * k;
   }
   for (int i = 0; i < n_seeds; ++i) {
-    double th = seeds[i];
-    for (int it = 0; it < 30; ++it) {
-      double df = 0.0;
-      const double f = slip_function(b, a, th, &df);
-      if (f == 0.0 || df == 0.0) break;
-      const double step = std::max(-M_PI / 8.0, std::min(M_PI / 8.0, f / df));
-      th -= step;
-      if (std::abs(step) <= 2.0 * eps * (1.0 + std::abs(th))) break;
-    }
+    const double th = polish(b, a, seeds[i], nullptr);
     add_slip(w, r, 2, mu, Eigen::Vector2d(std::cos(th), std::sin(th)), out);
   }
 }
@@ -149,7 +181,7 @@ LocalCoulombSolution local_coulomb_solution(const Eigen::Matrix3d& w,
     add_slip(w, r, 1, mu, Eigen::Vector2d(1.0, 0.0), cand);
     add_slip(w, r, 1, mu, Eigen::Vector2d(-1.0, 0.0), cand);
   } else {
-    add_slip_3d(w, r, mu, cand);
+    add_slip_3d(w, r, mu, current, cand);
   }
   if (cand.n == 0)
     return stick; // no slip direction with a positive denominator: the caller reports it

@@ -36,7 +36,12 @@
 //      coefficient|, so no root sits at t = infinity (a nonzero f of degree 2
 //      cannot be small at all 8 samples). Its roots (eigenvalues of the 4 x 4
 //      companion matrix, Eigen::EigenSolver) are polished by Newton's method
-//      on f(th) and each gives a candidate.
+//      on f(th) and each gives a candidate. Warm path first: when `current`
+//      slips (lambda_t != 0), Newton's method from its direction
+//      e = -lambda_t/|lambda_t|; a converged root with s along e (violation
+//      below mu lambda_n, where a root has 0 or 2 mu lambda_n up to
+//      round-off) is an exact slip solution, the one continuous with the
+//      sweeps, and is taken without the quartic.
 // Choice: open when r_n >= 0; else stick when the stick multiplier lies in
 // the cone (lambda_n >= 0, |lambda_t| <= mu lambda_n, as computed); else the
 // slip candidate of least violation of the law, in the units of lambda,
@@ -47,8 +52,8 @@
 // Deciding stick by the cone test, not by comparing violations, keeps the
 // choice exact near the stick/slip boundary, where s/|s| is ill-conditioned
 // (|s| -> 0) and a slip violation means little.
-// Cost: d = 1 about 60 flops; d = 2 a 4 x 4 eigenvalue problem and a few
-// Newton steps, a few microseconds.
+// Cost (measured, one core): d = 1 0.05 us; d = 2 2.2 us through the
+// quartic (the 4 x 4 eigenvalue problem dominates), less on the warm path.
 
 #include <Eigen/Core>
 #include <Eigen/LU>
