@@ -179,6 +179,71 @@ Eigen::VectorXd manufactured_slip(const Eigen::MatrixXd& w, double mu, double ln
   return y - w * lambda;
 }
 
+/// First-order sensitivity k = ||d lambda / d r||_inf of a d = 2 slip
+/// solution (lambda_n, direction th, slip sigma), by the implicit function
+/// theorem on its equations (local_coulomb_solution.hpp), x = (lambda_n, th):
+///   F1 = r_n + lambda_n (w_nn - mu w_nt . e) = 0,
+///   F2 = e x (r_t + lambda_n (w_tn - mu W_tt e)) = 0,  e = (cos th, sin th),
+/// d lambda = (d lambda / dx) (-J_x^-1 J_r) dr, lambda = (lambda_n,
+/// -mu lambda_n e). At the solution r_t + ... = sigma e, so dF2/dth =
+/// e' x (sigma e) + e x (-mu lambda_n W_tt e') = -sigma - mu lambda_n e x W_tt e'.
+/// First order suffices: the perturbations are of order eps.
+double slip_sensitivity(const Eigen::MatrixXd& w, double mu, double ln, double th, double sigma) {
+  const Eigen::Vector2d e(std::cos(th), std::sin(th)), de(-std::sin(th), std::cos(th));
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+    return a(0) * b(1) - a(1) * b(0);
+  };
+  const Eigen::RowVector2d wnt = w.block(0, 1, 1, 2);
+  const Eigen::Vector2d wtn = w.block(1, 0, 2, 1);
+  const Eigen::Matrix2d wtt = w.block(1, 1, 2, 2);
+  Eigen::Matrix2d jx;
+  jx << w(0, 0) - mu * wnt.dot(e), -mu * ln * wnt.dot(de), cross(e, wtn - mu * wtt * e),
+      -sigma - mu * ln * cross(e, wtt * de);
+  Eigen::Matrix<double, 2, 3> jr;
+  jr << 1.0, 0.0, 0.0, 0.0, -e(1), e(0);
+  Eigen::Matrix<double, 3, 2> dl;
+  dl << 1.0, 0.0, -mu * e(0), mu * ln * std::sin(th), -mu * e(1), -mu * ln * std::cos(th);
+  const Eigen::Matrix3d k = dl * jx.inverse() * jr;
+  return k.cwiseAbs().rowwise().sum().maxCoeff();
+}
+
+/// Number of solutions of one d = 2 contact's problem with r_n < 0, found by
+/// a method apart from the solver's: stick from W^-1 r (at most one), slip
+/// from the sign changes of f(th) = e x H(e) on a grid of 20000 angles,
+/// refined by bisection, kept when lambda_n > 0 and s . e > 0.
+int count_local_solutions_3d(const Eigen::MatrixXd& w, const Eigen::Vector3d& r, double mu) {
+  int n = 0;
+  const Eigen::Vector3d stick = -w.inverse() * r;
+  if (stick(0) >= 0.0 && stick.tail<2>().norm() <= mu * stick(0)) ++n;
+  const auto slip = [&](double th, double& ln, Eigen::Vector2d& s) {
+    const Eigen::Vector2d e(std::cos(th), std::sin(th));
+    const double den = w(0, 0) - mu * (w(0, 1) * e(0) + w(0, 2) * e(1));
+    ln = -r(0) / den;
+    s = r.tail<2>() + w.block(1, 0, 2, 1) * ln - mu * ln * w.block(1, 1, 2, 2) * e;
+    return e(0) * s(1) - e(1) * s(0); // s parallel to e where this vanishes
+  };
+  const int grid = 20000;
+  double ln = 0.0;
+  Eigen::Vector2d s;
+  for (int i = 0; i < grid; ++i) {
+    double a = 2.0 * M_PI * i / grid, b = 2.0 * M_PI * (i + 1) / grid;
+    double fa = slip(a, ln, s);
+    if (fa * slip(b, ln, s) > 0.0) continue;
+    for (int it = 0; it < 60; ++it) {
+      const double m = 0.5 * (a + b);
+      const double fm = slip(m, ln, s);
+      if (fa * fm <= 0.0)
+        b = m;
+      else
+        a = m, fa = fm;
+    }
+    slip(0.5 * (a + b), ln, s);
+    const Eigen::Vector2d e(std::cos(0.5 * (a + b)), std::sin(0.5 * (a + b)));
+    if (ln > 0.0 && s.dot(e) > 0.0) ++n;
+  }
+  return n;
+}
+
 // Manufactured slip with the normal decoupled (w_nt = 0): lambda_n = rho/w_nn
 // is fixed, the tangential problem is Tresca's, a strictly convex program
 // (W_tt SPD): the solution is unique, so it is the manufactured one.
@@ -188,44 +253,47 @@ TEST(CoulombGaussSeidel, SingleContact3dSlipDecoupled) {
   w << 2.0, 0.0, 0.0, 0.0, 1.0, 0.25, 0.0, 0.25, 0.75;
   Eigen::VectorXd star;
   const Eigen::VectorXd q = manufactured_slip(w, 0.3, 1.0, Eigen::Vector2d(0.6, 0.8), 0.5, star);
+  EXPECT_EQ(count_local_solutions_3d(w, q, 0.3), 1) << "Tresca: unique";
   const Solved s = solve(w, q, 2, 0.3, "3D slip (w_nt = 0), mu 0.3");
   EXPECT_EQ(s.state[0], ReducedContactState::slip);
-  // lambda_n = rho / w_nn (k = 1/2); lambda_t = -mu lambda_n e with e's
-  // sensitivity |de| <= |ds| / (sigma + mu lambda_n lambda_min(W_tt)) (the
-  // Tresca return map's Lipschitz constant): k = max(1/2, mu / sigma +
-  // 1/sigma) bounds both, = 2.6 with mu 0.3, sigma 0.5.
-  expect_lambda(s, w, q, 2, star, (1.0 + 0.3) / 0.5);
+  // Manufactured above; k from the implicit function theorem.
+  const double k = slip_sensitivity(w, 0.3, 1.0, std::atan2(0.8, 0.6), 0.5);
+  std::printf("  sensitivity k = %.3f\n", k);
+  expect_lambda(s, w, q, 2, star, k);
 }
 
 // Manufactured slip on the coupled block (w_nt != 0): lambda_n = 1,
-// e = (0.6, 0.8), sigma = 0.5, mu = 0.3. The coupling is weak
-// (mu |w_nt| = 0.084 << w_nn = 2); the solution's uniqueness is assumed
-// here, not proven (the solver would return another solution of the law,
-// which the certificate would accept but this test would not).
+// e = (0.6, 0.8), sigma = 0.5, mu = 0.3. Its uniqueness (which the
+// comparison with the manufactured solution needs) is checked by the scan
+// of count_local_solutions_3d.
 TEST(CoulombGaussSeidel, SingleContact3dSlipCoupled) {
   const Eigen::MatrixXd w = block_3d();
   Eigen::VectorXd star;
   const Eigen::VectorXd q = manufactured_slip(w, 0.3, 1.0, Eigen::Vector2d(0.6, 0.8), 0.5, star);
+  ASSERT_EQ(count_local_solutions_3d(w, q, 0.3), 1) << "the manufactured solution must be unique";
   const Solved s = solve(w, q, 2, 0.3, "3D slip (coupled), mu 0.3");
   EXPECT_EQ(s.state[0], ReducedContactState::slip);
-  // Sensitivity as in the decoupled case, with 1 / (w_nn - mu |w_nt|) for
-  // lambda_n: k = (1 + mu) / sigma still bounds it (1 / 1.916 < 2.6).
-  expect_lambda(s, w, q, 2, star, (1.0 + 0.3) / 0.5);
+  // Manufactured above; k from the implicit function theorem.
+  const double k = slip_sensitivity(w, 0.3, 1.0, std::atan2(0.8, 0.6), 0.5);
+  std::printf("  sensitivity k = %.3f\n", k);
+  expect_lambda(s, w, q, 2, star, k);
 }
 
 // Radial return (3D, W = diag(a, b, b)): lambda_n = rho / a, and if
 // |r_t| > b mu lambda_n, lambda_t = -mu lambda_n r_t / |r_t| and s =
 // r_t (1 - b mu lambda_n / |r_t|) (parallel to r_t, so consistent).
 // a = 2, b = 0.5, r = (-3, 0.6, -0.8), mu = 0.5: lambda_n = 1.5, b mu lambda_n
-// = 0.375 < |r_t| = 1: slip, lambda_t = -0.75 (0.6, -0.8) = (-0.45, 0.6).
+// = 0.375 < |r_t| = 1: slip, lambda_t = -0.75 (0.6, -0.8) = (-0.45, 0.6),
+// |s| = 0.625.
 TEST(CoulombGaussSeidel, SingleContact3dRadialReturn) {
   const Eigen::MatrixXd w = Eigen::Vector3d(2.0, 0.5, 0.5).asDiagonal();
   const Eigen::VectorXd q = Eigen::Vector3d(-3.0, 0.6, -0.8);
   const Solved s = solve(w, q, 2, 0.5, "3D radial return, mu 0.5");
   EXPECT_EQ(s.state[0], ReducedContactState::slip);
-  // Derivation above; k = (1 + mu) / |s| = 1.5 / 0.625 bounds lambda_n's
-  // 1/a and the direction's 1/|s| sensitivities.
-  expect_lambda(s, w, q, 2, Eigen::Vector3d(1.5, -0.45, 0.6), 1.5 / 0.625);
+  // Derivation above; k from the implicit function theorem.
+  const double k = slip_sensitivity(w, 0.5, 1.5, std::atan2(-0.8, 0.6), 0.625);
+  std::printf("  sensitivity k = %.3f\n", k);
+  expect_lambda(s, w, q, 2, Eigen::Vector3d(1.5, -0.45, 0.6), k);
 }
 
 // --- Frictionless --------------------------------------------------------------
