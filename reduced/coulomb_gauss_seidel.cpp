@@ -125,16 +125,15 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
       const LocalCoulombSolution local =
           local_coulomb_solution(m_block[c], m_lu[c], r, m_d, m_mu, current);
       const double local_size = local.lambda.cwiseAbs().maxCoeff();
-      if (!(local.violation <= m_options.local_violation * local_size) ||
-          !local.lambda.allFinite()) {
+      if (!(local.violation <= m_options.local_violation) || !local.lambda.allFinite()) {
         report.status = CoulombSweepStatus::no_local_solution;
         report.sweeps = sweep;
         report.failed_contact = c;
         report.message = where + "contact " + std::to_string(c) +
                          ": no local solution (best candidate, " + to_string(local.state) +
-                         ", violates the law by " + number(local.violation) + " N for |lambda| " +
-                         number(local_size) + " N; allowed " + number(m_options.local_violation) +
-                         " relative) at sweep " + std::to_string(sweep) + ", mu = " + number(m_mu);
+                         ", violates the law by " + number(local.violation) +
+                         " relative; allowed " + number(m_options.local_violation) + ") at sweep " +
+                         std::to_string(sweep) + ", mu = " + number(m_mu);
         return report;
       }
       const Eigen::Vector3d delta = local.lambda - current;

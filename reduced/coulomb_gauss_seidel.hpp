@@ -56,9 +56,11 @@
 // (mu = 0: w_nn <= singular_tolerance max_i W_ii; mu > 0: the singular
 // values of W_cc have sigma_min <= singular_tolerance sigma_max), a contact
 // that cannot be closed or whose stick multiplier is not determined;
-// no_local_solution when the best local candidate violates the law by more
-// than local_violation of its size (a detector of gross trouble, e.g. no
-// local solution for a very large mu; not a certificate tolerance).
+// no_local_solution when the best local candidate's relative violation
+// (local_coulomb_solution.hpp: round-off at a genuine solution, of order 1
+// otherwise) exceeds local_violation (a detector of gross trouble, e.g. no
+// local solution for a very large mu or an indefinite block; not a
+// certificate tolerance).
 //
 // Cost. Per sweep 2 m (1+d) flops per contact carrying a force to refresh y
 // (2 m^2 at most), then per contact 2 (1+d)^2 for
@@ -85,7 +87,7 @@ struct CoulombGaussSeidelOptions {
   double relative_change = 1e-14;
   /// Relative size below which a closing contact's block is singular; in (0, 1).
   double singular_tolerance = 1e-12;
-  /// Local-solution violation (relative to its size) reported as failure; in (0, 1).
+  /// Relative local-solution violation reported as failure; in (0, 1).
   double local_violation = 1e-8;
 };
 

@@ -67,15 +67,25 @@ void add_slip(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, int d, double 
   c.lambda(0) = rho / den;
   for (int i = 0; i < d; ++i)
     c.lambda(1 + i) = -mu * c.lambda(0) * e(i);
-  // s = r_t + w_tn lambda_n + W_tt lambda_t
+  // s = r_t + w_tn lambda_n + W_tt lambda_t, and the size of its terms.
   Eigen::Vector2d s = Eigen::Vector2d::Zero();
+  double size = 0.0;
   for (int i = 0; i < d; ++i) {
     s(i) = r(1 + i) + w(1 + i, 0) * c.lambda(0);
-    for (int j = 0; j < d; ++j)
+    double terms = std::abs(r(1 + i)) + std::abs(w(1 + i, 0) * c.lambda(0));
+    for (int j = 0; j < d; ++j) {
       s(i) += w(1 + i, 1 + j) * c.lambda(1 + j);
+      terms += std::abs(w(1 + i, 1 + j) * c.lambda(1 + j));
+    }
+    size = std::max(size, terms);
   }
-  const double slip = s.head(d).norm();
-  c.violation = slip > 0.0 ? mu * c.lambda(0) * (e.head(d) - s.head(d) / slip).norm() : 0.0;
+  // s must be sigma e, sigma >= 0: its part across e and its part against e.
+  double along = 0.0;
+  for (int i = 0; i < d; ++i)
+    along += s(i) * e(i);
+  const double across = (s.head(d) - along * e.head(d)).norm();
+  const double off = across + std::max(-along, 0.0);
+  c.violation = off == 0.0 ? 0.0 : off / size;
   out.add(c);
 }
 
@@ -87,17 +97,16 @@ void add_slip_3d(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, double mu,
   const Eigen::Vector2d b = w(0, 0) * rt + rho * w.block<2, 1>(1, 0);
   const Eigen::Matrix2d a = -mu * (rt * w.block<1, 2>(0, 1) + rho * w.block<2, 2>(1, 1));
   // Warm path: Newton from the current slip direction e = -lambda_t/|lambda_t|.
-  // A converged root with s along e (violation below mu lambda_n: at a root
-  // s/|s| = +e or -e, violation 0 or 2 mu lambda_n up to round-off) is an
-  // exact slip solution, the one continuous with the sweeps; otherwise the
-  // quartic below gives them all.
+  // A converged root with s along e (s . e >= 0, violation at round-off) is
+  // an exact slip solution, the one continuous with the sweeps; otherwise
+  // the quartic below gives them all.
   if (current(1) != 0.0 || current(2) != 0.0) {
     bool converged = false;
     const double th = polish(b, a, std::atan2(-current(2), -current(1)), &converged);
     if (converged) {
       Candidates warm;
       add_slip(w, r, 2, mu, Eigen::Vector2d(std::cos(th), std::sin(th)), warm);
-      if (warm.n == 1 && warm.item[0].violation < mu * warm.item[0].lambda(0)) {
+      if (warm.n == 1 && warm.item[0].violation <= 64.0 * eps) {
         out.add(warm.item[0]);
         return;
       }
@@ -172,7 +181,9 @@ LocalCoulombSolution local_coulomb_solution(const Eigen::Matrix3d& w,
   for (int i = 0; i < m; ++i)
     stick.lambda(i) = x(i);
   const double cone = std::hypot(stick.lambda(1), stick.lambda(2)) - mu * stick.lambda(0);
-  stick.violation = std::max({-stick.lambda(0), cone, 0.0});
+  const double stick_size = stick.lambda.cwiseAbs().maxCoeff();
+  const double stick_off = std::max({-stick.lambda(0), cone, 0.0});
+  stick.violation = stick_off == 0.0 ? 0.0 : stick_off / stick_size;
   if (stick.lambda(0) >= 0.0 && cone <= 0.0) return stick;
   // Otherwise slip: the candidate of least violation, the nearest to
   // `current` between those within round-off of it.
@@ -186,12 +197,9 @@ LocalCoulombSolution local_coulomb_solution(const Eigen::Matrix3d& w,
   if (cand.n == 0)
     return stick; // no slip direction with a positive denominator: the caller reports it
   double least = std::numeric_limits<double>::infinity();
-  double size = 0.0;
-  for (int i = 0; i < cand.n; ++i) {
+  for (int i = 0; i < cand.n; ++i)
     least = std::min(least, cand.item[i].violation);
-    size = std::max(size, cand.item[i].lambda.cwiseAbs().maxCoeff());
-  }
-  const double window = least + 64.0 * eps * size;
+  const double window = least + 64.0 * eps;
   int chosen = 0;
   double nearest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < cand.n; ++i) {

@@ -36,22 +36,26 @@
 //      coefficient|, so no root sits at t = infinity (a nonzero f of degree 2
 //      cannot be small at all 8 samples). Its roots (eigenvalues of the 4 x 4
 //      companion matrix, Eigen::EigenSolver) are polished by Newton's method
-//      on f(th) and each gives a candidate. Warm path first: when `current`
-//      slips (lambda_t != 0), Newton's method from its direction
-//      e = -lambda_t/|lambda_t|; a converged root with s along e (violation
-//      below mu lambda_n, where a root has 0 or 2 mu lambda_n up to
-//      round-off) is an exact slip solution, the one continuous with the
-//      sweeps, and is taken without the quartic.
+//      on f(th) and each gives a candidate.
+// A slip candidate's violation is how far s is from sigma e, sigma >= 0,
+// relative to the size of the terms summed into s (|r_t| + |w_tn| lambda_n
+// + |W_tt| |lambda_t|, the largest entry):
+//     (|s - (s . e) e| + max(-s . e, 0)) / size,
+// round-off (a few eps) at a genuine solution, of order 1 at a root with s
+// against e; unlike mu lambda_n |e - s/|s|| it stays well-conditioned as
+// |s| -> 0 (near the stick boundary). A stick candidate's violation is
+// max(-lambda_n, |lambda_t| - mu lambda_n, 0) / |lambda|.
 // Choice: open when r_n >= 0; else stick when the stick multiplier lies in
-// the cone (lambda_n >= 0, |lambda_t| <= mu lambda_n, as computed); else the
-// slip candidate of least violation of the law, in the units of lambda,
-//   mu lambda_n |e - s/|s||  (2 mu lambda_n when s opposes e, 0 when s = 0),
-// and between candidates within round-off of it (64 eps of their size) the
-// one nearest `current` (the previous iterate: continuity of the sweeps
-// where the slip problem has several solutions, which needs a large mu).
-// Deciding stick by the cone test, not by comparing violations, keeps the
-// choice exact near the stick/slip boundary, where s/|s| is ill-conditioned
-// (|s| -> 0) and a slip violation means little.
+// the cone (lambda_n >= 0, |lambda_t| <= mu lambda_n, as computed); else,
+// for d = 2, first the warm path: when `current` slips (lambda_t != 0),
+// Newton's method from its direction e = -lambda_t/|lambda_t|, taken if it
+// converges to a root of violation <= 64 eps (an exact slip solution, the
+// one continuous with the sweeps); else the slip candidate of least
+// violation, and between candidates within 64 eps of it the one nearest
+// `current` (the previous iterate: continuity of the sweeps where the slip
+// problem has several solutions, which needs a large mu). Deciding stick by
+// the cone test, not by comparing violations, keeps the choice exact near
+// the stick/slip boundary.
 // Cost (measured, one core): d = 1 0.05 us; d = 2 2.2 us through the
 // quartic (the 4 x 4 eigenvalue problem dominates), less on the warm path.
 
@@ -65,8 +69,7 @@ namespace rsi {
 struct LocalCoulombSolution {
   Eigen::Vector3d lambda = Eigen::Vector3d::Zero(); ///< entries 0..d used [N]
   ReducedContactState state = ReducedContactState::open;
-  /// the chosen candidate's violation (above; for stick max(-lambda_n,
-  /// |lambda_t| - mu lambda_n, 0)) [N]
+  /// the chosen candidate's relative violation of the law (above) [-]
   double violation = 0.0;
 };
 

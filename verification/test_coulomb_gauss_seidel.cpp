@@ -528,6 +528,44 @@ TEST(CoulombGaussSeidel, RandomAtTheLawsSizes) {
   random_well_posed(100, 16, {2}, {0.15, 0.5}, 10);
 }
 
+// Near the stick/slip boundary, where s/|s| is ill-conditioned: single
+// contacts manufactured to slip with sigma = 10^-k |r| (k = 1 .. 16) and to
+// stick with |lambda_t| = mu lambda_n (1 - 10^-k), d = 1 and 2, mu = 0.3.
+// The solver must neither fail nor leave the certificate's bounds (the slip
+// residual's bound grows as 4 delta_y / |s|, capped at 2 mu lambda_n).
+TEST(CoulombGaussSeidel, NearStickSlipBoundary) {
+  const double mu = 0.3;
+  Worst worst;
+  for (int d : {1, 2}) {
+    Eigen::MatrixXd w = block_3d().topLeftCorner(1 + d, 1 + d);
+    Eigen::VectorXd e(d);
+    if (d == 1)
+      e << 1.0;
+    else
+      e << 0.6, 0.8;
+    for (int k = 1; k <= 16; ++k) {
+      const double small = std::pow(10.0, -k);
+      // Slip: lambda = (1, -mu e), y = (0, sigma e).
+      Eigen::VectorXd lambda(1 + d), y = Eigen::VectorXd::Zero(1 + d);
+      lambda << 1.0, -mu * e;
+      y.tail(d) = small * e;
+      Eigen::VectorXd q = y - w * lambda;
+      const std::string slip_name =
+          "slip d=" + std::to_string(d) + " sigma 1e-" + std::to_string(k);
+      const Solved slip = solve(w, q, d, mu, slip_name.c_str());
+      check_certificate(w, q, d, mu, slip, worst);
+      // Stick just inside the cone: lambda = (1, -mu (1 - small) e), y = 0.
+      lambda.tail(d) = -mu * (1.0 - small) * e;
+      q = -(w * lambda);
+      const std::string stick_name =
+          "stick d=" + std::to_string(d) + " 1 - 1e-" + std::to_string(k);
+      const Solved stick = solve(w, q, d, mu, stick_name.c_str());
+      check_certificate(w, q, d, mu, stick, worst);
+    }
+  }
+  std::printf("near the boundary: worst certificate / bound %.3f\n", worst.ratio);
+}
+
 // A warm start at the solution: the first sweep changes nothing beyond
 // round-off, so the solver stops after one sweep.
 TEST(CoulombGaussSeidel, WarmStartAtSolutionStopsAtOnce) {
