@@ -21,10 +21,10 @@
 // others held, r_c = y_c - W_cc lambda_c (y = [g~; s~] + W lambda kept up to
 // date) and lambda_c is replaced by the EXACT solution of its local
 // (1+d)-square problem y_c = r_c + W_cc lambda_c (local_coulomb_solution.hpp:
-// open, stick by an LU solve with W_cc, slip in closed form for d = 1 and from a quartic
-// for d = 2), after which y is updated by the block column W_:c times the
-// change. y is recomputed from scratch at the start of each sweep, so
-// round-off does not accumulate over sweeps.
+// open; stick by an LU solve with W_cc; slip in closed form for d = 1 and
+// from a quartic for d = 2), after which y is updated by the block column
+// W_:c times the change. y is recomputed from scratch at the start of each
+// sweep, so round-off does not accumulate over sweeps.
 //
 // Stopping (derived). Let Delta be the largest change of any multiplier in a
 // sweep and L the largest multiplier. When the sweep ends, contact c's
@@ -33,23 +33,32 @@
 // slip residuals are at most ||W||_inf Delta plus the round-off of forming
 // y (about m eps (|g~| + ||W||_inf L), m = (1+d) nc). The solver stops at
 // the first sweep with Delta <= relative_change * L (or Delta = 0), which
-// puts the residuals at round-off for relative_change of order m eps.
+// puts the residuals at round-off for relative_change of order m eps: the
+// default 1e-14 (45 eps) suits the laws' sizes (m = 44 for the 22 tips of
+// the 2D case, 48 for the 16 nodes of Rotor 37). Measured on dense random W
+// (test_coulomb_gauss_seidel): every case stops, the certificate at 6 % of
+// its round-off bound at worst.
 //
 // Convergence (what we assume). mu = 0: a sweep is an exact block
 // coordinate minimisation of the convex 1/2 l^T W l + [g~; s~]^T l over
 // {lambda_n >= 0, lambda_t = 0}; for W's normal rows positive definite this
-// converges linearly to the unique solution (Cryer 1971; Luo & Tseng 1992),
-// at a rate set by the normal rows' coupling (one sweep when W is diagonal).
-// mu > 0: for FIXED thresholds mu lambda_n the tangential sweep is again a
-// coordinate minimisation (Tresca friction, convex); Coulomb couples the
-// threshold to lambda_n, and the sweep stays a contraction when mu times the
-// normal/tangential coupling of W (the blocks W_nt between and within
-// contacts, relative to the diagonal blocks) is small, the usual condition
-// of the existence and uniqueness results for discrete Coulomb friction
-// (Klarbring 1990; Haslinger). We assume W positive definite on the closing
-// contacts and mu moderate (the tests use mu <= 0.5 on dense random W);
-// there is no general theorem for mu > 0, and the solver REPORTS a failure
-// (status max_sweeps) instead of returning an unconverged lambda silently.
+// converges linearly to the unique solution (Cryer 1971 for projected SOR;
+// Luo & Tseng 1992 for coordinate descent), at a rate set by the coupling
+// of the normal rows (one sweep when W is diagonal). mu > 0: for FIXED
+// thresholds mu lambda_n the tangential sweep is again a coordinate
+// minimisation (Tresca friction, convex); Coulomb ties the threshold to
+// lambda_n, and the sweep is a perturbation of the convex one, of size mu
+// times the normal/tangential coupling of W (the blocks W_nt within and
+// between contacts, relative to the diagonal blocks). There is no general
+// convergence theorem for mu > 0 (nor uniqueness for large mu; see Acary &
+// Brogliato, Numerical Methods for Nonsmooth Dynamical Systems, 2008, on
+// this NSGS): we assume W positive definite on the closing contacts and mu
+// moderate, and the solver REPORTS a failure (status max_sweeps) instead of
+// returning an unconverged lambda. Measured on dense random W (coupling
+// between contacts as strong as within): mu = 0.5 converges in at most 111
+// sweeps (nc = 8, d = 2), 55 (22 contacts, d = 1), 29 (16 contacts, d = 2);
+// 200 random cases each at mu = 1 and at nearly singular W (cond 3e4) also
+// converged (at most 285 sweeps).
 //
 // Failures, reported as a status, never thrown: max_sweeps exceeded;
 // singular_block when a contact closes (r_n < 0) but its block is singular
@@ -62,13 +71,15 @@
 // local solution for a very large mu or an indefinite block; not a
 // certificate tolerance).
 //
-// Cost. Per sweep 2 m (1+d) flops per contact carrying a force to refresh y
-// (2 m^2 at most), then per contact 2 (1+d)^2 for
-// r_c, the local solve (d = 1: ~60 flops; d = 2: a 4 x 4 companion
-// eigenproblem, ~2 us), and 2 m (1+d) for the update of y when lambda_c
-// changed. Open contacts that stay open change nothing. Setup: one
-// (1+d)-square SVD (regularity) and LU per contact, when it first closes. A warm start (the
-// previous step's lambda) cuts the sweeps.
+// Cost. Per sweep: refreshing y, 2 m (1+d) flops per contact carrying a
+// force (2 m^2 at most); per contact 2 (1+d)^2 flops for r_c, the local
+// solve (measured: d = 1 0.05 us; d = 2 0.16 us on the warm path, 2.2 us
+// through the quartic) and 2 m (1+d) flops to update y when lambda_c
+// changed; open contacts that stay open change nothing. Setup: one
+// (1+d)-square SVD (regularity) and LU per contact, when it first closes.
+// Measured whole solves on dense random W, all contacts coupled: 16
+// contacts d = 2, 22 sweeps, 78 us cold; 22 contacts d = 1, 63 sweeps,
+// 107 us. A warm start (the previous step's lambda) saves sweeps.
 
 #include <string>
 #include <vector>
