@@ -111,7 +111,10 @@ void expect_lambda(const Solved& s, const Eigen::MatrixXd& w, const Eigen::Vecto
 
 // W = [2 0.5; 0.5 1], r = (-1, 0.1). Stick: lambda = -W^-1 r
 // = -[1 -0.5; -0.5 2] (-1, 0.1) / 1.75 = (1.05, -0.7) / 1.75 = (0.6, -0.4),
-// in the cone when 0.4 <= 0.6 mu, i.e. mu >= 2/3.
+// in the cone when 0.4 <= 0.6 mu, i.e. mu >= 2/3. No slip solution at
+// mu = 0.8: e = +1 gives lambda_n = 1/1.6, lambda_t = -0.5, s = 0.1 +
+// 0.3125 - 0.5 < 0; e = -1 gives lambda_n = 1/2.4, lambda_t = 1/3, s > 0:
+// neither consistent, so the stick solution is the only one.
 TEST(CoulombGaussSeidel, SingleContact2dStick) {
   Eigen::MatrixXd w(2, 2);
   w << 2.0, 0.5, 0.5, 1.0;
@@ -153,14 +156,17 @@ Eigen::MatrixXd block_3d() {
   return w;
 }
 
+int count_local_solutions_3d(const Eigen::MatrixXd& w, const Eigen::Vector3d& r, double mu);
+
 // Manufactured stick: lambda* = (1, 0.25, -0.125), r = -W lambda* (exact in
 // binary: dyadic products), |lambda_t*| = 0.2795 < mu = 0.5: y = 0 with
-// lambda* in the cone solves the problem, and the solver takes stick
-// whenever its multiplier is in the cone.
+// lambda* in the cone solves the problem; the scan of
+// count_local_solutions_3d (below) finds no other.
 TEST(CoulombGaussSeidel, SingleContact3dStick) {
   const Eigen::MatrixXd w = block_3d();
   const Eigen::Vector3d star(1.0, 0.25, -0.125);
   const Eigen::VectorXd q = -(w * star);
+  EXPECT_EQ(count_local_solutions_3d(w, q, 0.5), 1) << "the stick solution must be the only one";
   const Solved s = solve(w, q, 2, 0.5, "3D stick, mu 0.5");
   EXPECT_EQ(s.state[0], ReducedContactState::stick);
   // Manufactured above; sensitivity k = ||W^-1||_inf.
@@ -288,6 +294,7 @@ TEST(CoulombGaussSeidel, SingleContact3dSlipCoupled) {
 TEST(CoulombGaussSeidel, SingleContact3dRadialReturn) {
   const Eigen::MatrixXd w = Eigen::Vector3d(2.0, 0.5, 0.5).asDiagonal();
   const Eigen::VectorXd q = Eigen::Vector3d(-3.0, 0.6, -0.8);
+  EXPECT_EQ(count_local_solutions_3d(w, q, 0.5), 1) << "the radial return must be the only one";
   const Solved s = solve(w, q, 2, 0.5, "3D radial return, mu 0.5");
   EXPECT_EQ(s.state[0], ReducedContactState::slip);
   // Derivation above; k from the implicit function theorem.
