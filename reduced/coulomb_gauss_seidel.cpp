@@ -53,8 +53,8 @@ void CoulombGaussSeidel::prepare(const Eigen::Ref<const Eigen::MatrixXd>& w, int
   if (m_mu == 0.0) {
     m_regularity[c] = diagonal > 0.0 ? w(o, o) / diagonal : 0.0;
   } else {
-    const LocalMatrix block = w.block(o, o, b, b);
-    const Eigen::JacobiSVD<LocalMatrix> svd(block);
+    const CoulombBlockMatrix block = w.block(o, o, b, b);
+    const Eigen::JacobiSVD<CoulombBlockMatrix> svd(block);
     const Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1> sigma = svd.singularValues();
     m_regularity[c] = sigma(0) > 0.0 ? sigma(b - 1) / sigma(0) : 0.0;
     if (m_regularity[c] > m_options.singular_tolerance) m_lu[c].compute(block);

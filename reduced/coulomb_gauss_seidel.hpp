@@ -146,9 +146,9 @@ private:
   double m_mu;
   CoulombGaussSeidelOptions m_options;
   std::vector<ReducedContactState> m_state;
-  std::vector<Eigen::Matrix3d> m_block;               ///< W_cc, leading (1+d) square
-  std::vector<Eigen::PartialPivLU<LocalMatrix>> m_lu; ///< LU of W_cc where regular (mu > 0)
-  std::vector<char> m_prepared;                       ///< contact c's block, regularity, LU are set
+  std::vector<Eigen::Matrix3d> m_block;                      ///< W_cc, leading (1+d) square
+  std::vector<Eigen::PartialPivLU<CoulombBlockMatrix>> m_lu; ///< LU of W_cc where regular (mu > 0)
+  std::vector<char> m_prepared;     ///< contact c's block, regularity, LU are set
   std::vector<double> m_regularity; ///< sigma_min/sigma_max (mu > 0) or w_nn/max W_ii (mu = 0)
   Eigen::VectorXd m_y;              ///< [g; s] of the current iterate
 };

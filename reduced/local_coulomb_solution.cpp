@@ -155,7 +155,7 @@ void add_slip_3d(const Eigen::Matrix3d& w, const Eigen::Vector3d& r, double mu,
 } // namespace
 
 LocalCoulombSolution local_coulomb_solution(const Eigen::Matrix3d& w,
-                                            const Eigen::PartialPivLU<LocalMatrix>& w_lu,
+                                            const Eigen::PartialPivLU<CoulombBlockMatrix>& w_lu,
                                             const Eigen::Vector3d& r, int d, double mu,
                                             const Eigen::Vector3d& current) {
   assert((d == 1 || d == 2) && mu >= 0.0);

@@ -74,7 +74,7 @@ struct LocalCoulombSolution {
 };
 
 /// A contact's (1+d) square block, stored without heap allocation.
-using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
+using CoulombBlockMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;
 
 /// The local solution of the problem above. `w` holds W_cc in its leading
 /// (1+d) square block, `w_lu` its LU factors with partial pivoting (used for
@@ -85,7 +85,7 @@ using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 
 /// where it is used: w_nn > 0 when r_n < 0, and W_cc invertible when also
 /// mu > 0.
 LocalCoulombSolution local_coulomb_solution(const Eigen::Matrix3d& w,
-                                            const Eigen::PartialPivLU<LocalMatrix>& w_lu,
+                                            const Eigen::PartialPivLU<CoulombBlockMatrix>& w_lu,
                                             const Eigen::Vector3d& r, int d, double mu,
                                             const Eigen::Vector3d& current);
 
