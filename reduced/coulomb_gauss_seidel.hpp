@@ -59,6 +59,9 @@
 // sweeps (nc = 8, d = 2), 55 (22 contacts, d = 1), 29 (16 contacts, d = 2);
 // 200 random cases each at mu = 1 and at nearly singular W (cond 3e4) also
 // converged (at most 285 sweeps).
+// On the default 2D case's own W (CB-10 bladed disk, full casing; normal
+// coupling between tips at most 0.095 of the diagonal) with all 22 tips
+// closing: 10-12 sweeps sliding, 17 sticking, mu 0.15 and 0.5.
 //
 // Failures, reported as a status, never thrown: max_sweeps exceeded;
 // singular_block when a contact closes (r_n < 0) but its block is singular

@@ -8,6 +8,7 @@
 //   - random well-posed problems W = dt^2 B M^-1 B^T (random SPD M, random B,
 //     mu in {0, 0.15, 0.5}, d = 1 and 2): the certificate within bounds
 //     derived from the stopping rule and round-off (derivation below);
+//   - the default 2D case's own W (22 tips closing, sliding and sticking);
 //   - a contact whose normal row of W is zero: reported when it closes,
 //     harmless when it stays open; bad arguments rejected; non-convergence
 //     reported.
@@ -39,8 +40,13 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include "bladed_disk.hpp"
+#include "case_file.hpp"
+#include "casing.hpp"
 #include "coulomb_gauss_seidel.hpp"
+#include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
+#include "reduction.hpp"
 
 namespace rsi {
 namespace {
@@ -588,6 +594,84 @@ TEST(CoulombGaussSeidel, WarmStartAtSolutionStopsAtOnce) {
   std::printf("cold start %d sweeps, warm start %d sweeps\n", first.sweeps, again.sweeps);
   ASSERT_TRUE(again.converged()) << again.message;
   EXPECT_EQ(again.sweeps, 1);
+}
+
+// --- The default 2D case's W ----------------------------------------------------
+
+/// W = dt^2 (B_q M^-1 B_q^T + B_c M_c^-1 B_c^T) of the default case (SPEC §2:
+/// CB-10 bladed disk, full casing) at rest, t = 0, for the 22 tips, ordered
+/// (n, t) per tip: the normal row is -e(u_k) on q and the Hermite values N
+/// on the casing's (u, u_s); the tangential row +e(v_k) on q and -N on the
+/// casing's (v, v_s) (the sliding of reduced_contact.hpp).
+Eigen::MatrixXd default_case_w(double& dt) {
+  const Case c = load_case(std::string(RSI_SOURCE_DIR) + "/data/cases/batailly2007.json");
+  const BladedDisk disk = assemble_bladed_disk(c);
+  const ReducedBasis basis = reduce_bladed_disk(disk, "cb", 10);
+  const Casing casing = assemble_casing(c);
+  const ReducedTipContact contact(disk, basis, casing, c);
+  std::vector<TipContact> tips;
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(basis.n_reduced());
+  const Eigen::VectorXd c0 = Eigen::VectorXd::Zero(casing.n_dofs());
+  dt = c.time.step;
+  contact.evaluate(q0, q0, c0, c0, dt, 0.0, tips);
+  const int nc = contact.n_tips();
+  Eigen::MatrixXd bq = Eigen::MatrixXd::Zero(2 * nc, basis.n_reduced());
+  Eigen::MatrixXd bc = Eigen::MatrixXd::Zero(2 * nc, casing.n_dofs());
+  for (int k = 0; k < nc; ++k) {
+    bq(2 * k, tips[k].q_u) = -1.0;
+    bq(2 * k + 1, tips[k].q_v) = 1.0;
+    for (int a = 0; a < 4; ++a) {
+      if (tips[k].c_u[a] >= 0) bc(2 * k, tips[k].c_u[a]) = tips[k].shape[a];
+      if (tips[k].c_v[a] >= 0) bc(2 * k + 1, tips[k].c_v[a]) = -tips[k].shape[a];
+    }
+  }
+  const Eigen::LLT<Eigen::MatrixXd> mq(basis.mass);
+  const Eigen::LLT<Eigen::MatrixXd> mc{Eigen::MatrixXd(casing.mass)};
+  EXPECT_EQ(mq.info(), Eigen::Success);
+  EXPECT_EQ(mc.info(), Eigen::Success);
+  const Eigen::MatrixXd xq = mq.solve(bq.transpose());
+  const Eigen::MatrixXd xc = mc.solve(bc.transpose());
+  const Eigen::MatrixXd w = dt * dt * (bq * xq + bc * xc);
+  return 0.5 * (w + w.transpose());
+}
+
+// All 22 tips closing at once (predicted gaps -0.1 .. -1 um), sliding as at
+// the operating point (s~ = Omega R_t dt = 7.7e-5 m per step, +-10 %) and as
+// at rest (s~ within +-10 nm: sticking): converged, the certificate within
+// its bounds (check_certificate), sweeps printed. Not a run: one step's
+// problem, with the model's own coupling between the tips.
+TEST(CoulombGaussSeidel, DefaultCaseW) {
+  double dt = 0.0;
+  const Eigen::MatrixXd w = default_case_w(dt);
+  const int nc = static_cast<int>(w.rows()) / 2;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> spectrum(w);
+  double coupling = 0.0; // largest off-diagonal |W_ij| / sqrt(W_ii W_jj) between tips' normals
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < nc; ++j)
+      if (i != j)
+        coupling = std::max(coupling, std::abs(w(2 * i, 2 * j)) /
+                                          std::sqrt(w(2 * i, 2 * i) * w(2 * j, 2 * j)));
+  std::printf(
+      "default case W: %d tips, eigenvalues %.3e .. %.3e m/N, largest normal coupling %.3f\n", nc,
+      spectrum.eigenvalues().minCoeff(), spectrum.eigenvalues().maxCoeff(), coupling);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double omega = 310.0, tip_radius = 0.5;
+  for (const double sliding : {omega * tip_radius * dt, 0.0}) {
+    for (double mu : {0.15, 0.5}) {
+      Eigen::VectorXd q(2 * nc);
+      for (int k = 0; k < nc; ++k) {
+        q(2 * k) = -1e-6 * (0.1 + 0.9 * unit(rng));
+        q(2 * k + 1) = sliding * (0.9 + 0.2 * unit(rng)) + 1e-8 * (2.0 * unit(rng) - 1.0);
+      }
+      const std::string name =
+          std::string(sliding > 0.0 ? "sliding" : "at rest") + ", mu " + std::to_string(mu);
+      const Solved s = solve(w, q, 1, mu, name.c_str());
+      Worst worst;
+      check_certificate(w, q, 1, mu, s, worst);
+      std::printf("  worst certificate / bound %.3f\n", worst.ratio);
+    }
+  }
 }
 
 // --- Failures reported ---------------------------------------------------------
