@@ -706,6 +706,29 @@ TEST(CoulombGaussSeidel, SingularBlockReportedWhenClosing) {
   }
 }
 
+// A contact whose TANGENTIAL rows of W are zero (d = 1): frictionless, only
+// w_nn matters and the step is solved; with friction its stick multiplier is
+// not determined (W_cc singular), reported when it closes.
+TEST(CoulombGaussSeidel, ZeroTangentialRow) {
+  std::mt19937 rng(9);
+  const int d = 1, nc = 3;
+  Eigen::MatrixXd w = random_w(20, (1 + d) * nc, rng);
+  w.row(3).setZero(); // contact 1's tangential row and column
+  w.col(3).setZero();
+  Eigen::VectorXd q = random_prediction(nc, d, rng);
+  q(2) = -1e-6; // contact 1 closes
+  const Solved frictionless = solve(w, q, d, 0.0, "zero tangential row, mu 0");
+  Worst worst;
+  check_certificate(w, q, d, 0.0, frictionless, worst);
+  EXPECT_GT(frictionless.lambda(2), 0.0) << "contact 1 closed";
+  CoulombGaussSeidel solver(d, 0.15);
+  Eigen::VectorXd lambda;
+  const CoulombGaussSeidelReport r = solver.solve(w, q, lambda);
+  std::printf("mu 0.15: %s\n", r.message.c_str());
+  EXPECT_EQ(r.status, CoulombSweepStatus::singular_block);
+  EXPECT_EQ(r.failed_contact, 1);
+}
+
 // The same W with contact 1 open (g~ > 0; its normal row of W is zero, so no
 // other contact can close it): solved, contact 1 open with lambda = 0.
 TEST(CoulombGaussSeidel, SingularBlockHarmlessWhenOpen) {
