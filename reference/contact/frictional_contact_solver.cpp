@@ -1,0 +1,235 @@
+#include "frictional_contact_solver.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/LU>
+
+namespace rsi {
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+std::string str(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3e", x);
+  return buffer;
+}
+
+/// One attempt of the semismooth Newton method with augmentation r_c =
+/// r_factor / W_nn,c.
+class AlartCurnierNewton {
+public:
+  AlartCurnierNewton(const FrictionalContactProblem& p, double r_factor)
+      : m_p(p)
+      , m_nc(p.n_contacts())
+      , m_d(p.n_tangents())
+      , m_b(p.block_size())
+      , m_m(p.n_unknowns())
+      , m_mu(p.friction())
+      , m_r(m_nc) {
+    for (int c = 0; c < m_nc; ++c)
+      m_r(c) = r_factor / p.w()(m_b * c, m_b * c);
+  }
+
+  /// F(lambda) into f; with `jacobian`, the Newton matrix into j; returns
+  /// whether the natural residuals pass the stopping test.
+  bool evaluate(const Eigen::VectorXd& lambda, Eigen::VectorXd& f, Eigen::MatrixXd* jacobian) {
+    const Eigen::MatrixXd& w = m_p.w();
+    const Eigen::VectorXd q = m_p.gaps_and_slips(lambda);
+    Eigen::VectorXd delta = m_p.predicted().cwiseAbs();
+    delta.noalias() += w.cwiseAbs() * lambda.cwiseAbs();
+    const double scale = lambda.cwiseAbs().maxCoeff();
+    const double eta = 4.0 * (m_m + 1) * eps;
+    f.resize(m_m);
+    if (jacobian) jacobian->setZero(m_m, m_m);
+    bool pass = true;
+    for (int c = 0; c < m_nc; ++c) {
+      const int n = m_b * c;
+      const double r = m_r(c);
+      const double ln = lambda(n);
+      const double g = q(n);
+      const double a = ln - r * g;
+      const bool closed = a > 0.0;
+      const Eigen::VectorXd lt = lambda.segment(n + 1, m_d);
+      const Eigen::VectorXd s = q.segment(n + 1, m_d);
+      const Eigen::VectorXd tau = lt - r * s;
+      const double rho = closed ? m_mu * a : 0.0;
+      const double tau_norm = tau.norm();
+      // Normal row.
+      if (closed) {
+        f(n) = r * g;
+        if (jacobian) jacobian->row(n) = r * w.row(n);
+        pass = pass && std::abs(g) <= eta * delta(n) && ln >= -eta * scale;
+      } else {
+        f(n) = ln;
+        if (jacobian) (*jacobian)(n, n) = 1.0;
+        pass = pass && std::abs(ln) <= eta * scale && g >= -eta * delta(n);
+      }
+      // Tangential rows.
+      if (rho == 0.0) {
+        f.segment(n + 1, m_d) = lt;
+        if (jacobian)
+          for (int k = 0; k < m_d; ++k)
+            (*jacobian)(n + 1 + k, n + 1 + k) = 1.0;
+        pass = pass && lt.norm() <= eta * scale;
+      } else if (tau_norm <= rho) { // stick
+        f.segment(n + 1, m_d) = r * s;
+        if (jacobian) jacobian->middleRows(n + 1, m_d) = r * w.middleRows(n + 1, m_d);
+        for (int k = 0; k < m_d; ++k)
+          pass = pass && std::abs(s(k)) <= eta * delta(n + 1 + k);
+      } else { // slip
+        const Eigen::VectorXd unit = tau / tau_norm;
+        f.segment(n + 1, m_d) = lt - rho * unit;
+        pass = pass && (lt - m_mu * ln * unit).norm() <= eta * scale;
+        if (jacobian) {
+          // d(tau) = E_t - r W_t; d(rho) = mu (e_n^T - r W_n).
+          Eigen::MatrixXd dtau = -r * w.middleRows(n + 1, m_d);
+          for (int k = 0; k < m_d; ++k)
+            dtau(k, n + 1 + k) += 1.0;
+          Eigen::RowVectorXd drho = (-m_mu * r) * w.row(n);
+          drho(n) += m_mu;
+          Eigen::MatrixXd projector = Eigen::MatrixXd::Identity(m_d, m_d);
+          projector.noalias() -= unit * unit.transpose();
+          Eigen::MatrixXd block = -unit * drho;
+          block.noalias() -= (rho / tau_norm) * projector * dtau;
+          for (int k = 0; k < m_d; ++k)
+            block(k, n + 1 + k) += 1.0;
+          jacobian->middleRows(n + 1, m_d) = block;
+        }
+      }
+    }
+    return pass;
+  }
+
+  FrictionalContactSolution run(const Eigen::VectorXd& initial, int max_iterations) {
+    FrictionalContactSolution out;
+    Eigen::VectorXd lambda = initial;
+    Eigen::VectorXd f(m_m), f_trial(m_m), trial(m_m), step(m_m);
+    Eigen::MatrixXd j(m_m, m_m);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(m_m, m_m);
+    for (int it = 0;; ++it) {
+      if (evaluate(lambda, f, &j)) {
+        out.status = FrictionalContactStatus::converged;
+        break;
+      }
+      if (it == max_iterations) {
+        out.status = FrictionalContactStatus::no_convergence;
+        out.message = "no convergence in " + std::to_string(max_iterations) +
+                      " Newton steps (|F| = " + str(f.norm()) + ")";
+        break;
+      }
+      lu.compute(j);
+      const double rcond = lu.rcond();
+      if (!lu.isInvertible() || !(rcond >= m_m * eps)) {
+        out.status = FrictionalContactStatus::singular;
+        out.message = "singular Newton matrix at step " + std::to_string(it) +
+                      " (reciprocal condition " + str(rcond) + ", rank " +
+                      std::to_string(lu.rank()) + " of " + std::to_string(m_m) +
+                      "): W singular on the closed contacts' rows?";
+        break;
+      }
+      step = lu.solve(-f);
+      if (!step.allFinite()) {
+        out.status = FrictionalContactStatus::singular;
+        out.message = "non-finite Newton step at step " + std::to_string(it);
+        break;
+      }
+      ++out.iterations;
+      // Armijo on psi = 1/2 |F|^2: the Newton direction has slope -|F|^2.
+      const double psi = 0.5 * f.squaredNorm();
+      double alpha = 1.0;
+      bool accepted = false;
+      for (int halving = 0; halving <= 30; ++halving, alpha *= 0.5) {
+        trial = lambda + alpha * step;
+        evaluate(trial, f_trial, nullptr);
+        if (0.5 * f_trial.squaredNorm() <= (1.0 - 2e-4 * alpha) * psi) {
+          accepted = true;
+          break;
+        }
+      }
+      if (!accepted) {
+        // No decrease: accept the full step once if it passes the stopping
+        // test (a round-off level F that the line search cannot improve).
+        trial = lambda + step;
+        if (evaluate(trial, f_trial, nullptr)) {
+          lambda = trial;
+          out.status = FrictionalContactStatus::converged;
+          break;
+        }
+        out.status = FrictionalContactStatus::no_convergence;
+        out.message = "no decrease of |F| along the Newton direction at step " +
+                      std::to_string(it) + " (|F| = " + str(f.norm()) + ")";
+        break;
+      }
+      lambda = trial;
+    }
+    out.lambda = lambda;
+    out.q = m_p.gaps_and_slips(lambda);
+    return out;
+  }
+
+private:
+  const FrictionalContactProblem& m_p;
+  int m_nc;
+  int m_d;
+  int m_b;
+  int m_m;
+  double m_mu;
+  Eigen::VectorXd m_r;
+};
+
+} // namespace
+
+FrictionalContactSolver::FrictionalContactSolver(const FrictionalContactSolverOptions& options)
+    : m_options(options) {
+  if (options.max_iterations < 1)
+    throw std::invalid_argument("FrictionalContactSolver: max_iterations = " +
+                                std::to_string(options.max_iterations) + ", allowed [1, inf)");
+}
+
+FrictionalContactSolution FrictionalContactSolver::solve(const FrictionalContactProblem& p) const {
+  return solve(p, Eigen::VectorXd::Zero(p.n_unknowns()));
+}
+
+FrictionalContactSolution
+FrictionalContactSolver::solve(const FrictionalContactProblem& p,
+                               const Eigen::Ref<const Eigen::VectorXd>& initial) const {
+  if (initial.size() != p.n_unknowns())
+    throw std::invalid_argument("FrictionalContactSolver: initial has " +
+                                std::to_string(initial.size()) + " entries, allowed exactly " +
+                                std::to_string(p.n_unknowns()));
+  if (!initial.allFinite())
+    throw std::invalid_argument("FrictionalContactSolver: initial must be finite");
+  const Eigen::VectorXd start = initial;
+  const double factors[] = {1.0, 10.0, 0.1, 100.0, 0.01};
+  FrictionalContactSolution first;
+  std::string messages;
+  int iterations = 0;
+  int attempt = 0;
+  for (double factor : factors) {
+    ++attempt;
+    AlartCurnierNewton newton(p, factor);
+    FrictionalContactSolution s = newton.run(start, m_options.max_iterations);
+    iterations += s.iterations;
+    if (s.ok()) {
+      s.iterations = iterations;
+      s.attempts = attempt;
+      return s;
+    }
+    if (attempt == 1) first = s;
+    messages += (attempt > 1 ? "; " : "") + std::string("r = ") + str(factor) + "/W_nn: " +
+                s.message;
+  }
+  first.iterations = iterations;
+  first.attempts = attempt;
+  first.message = "frictional contact: no solution after " + std::to_string(attempt) +
+                  " attempts (" + messages + ")";
+  return first;
+}
+
+} // namespace rsi
