@@ -82,10 +82,13 @@ public:
         if (jacobian) jacobian->middleRows(n + 1, m_d) = r * w.middleRows(n + 1, m_d);
         for (int k = 0; k < m_d; ++k)
           pass = pass && std::abs(s(k)) <= eta * delta(n + 1 + k);
+        pass = pass && lt.norm() <= m_mu * ln + eta * scale;
       } else { // slip
         const Eigen::VectorXd unit = tau / tau_norm;
         f.segment(n + 1, m_d) = lt - rho * unit;
-        pass = pass && (lt - m_mu * ln * unit).norm() <= eta * scale;
+        const double delta_t = delta.segment(n + 1, m_d).maxCoeff();
+        pass = pass && std::abs(lt.norm() - m_mu * ln) <= eta * scale &&
+               (s.norm() * lt + (m_mu * ln) * s).norm() <= eta * scale * delta_t;
         if (jacobian) {
           // d(tau) = E_t - r W_t; d(rho) = mu (e_n^T - r W_n).
           Eigen::MatrixXd dtau = -r * w.middleRows(n + 1, m_d);
@@ -124,12 +127,15 @@ public:
         break;
       }
       lu.compute(j);
-      const double rcond = lu.rcond();
-      if (!lu.isInvertible() || !(rcond >= m_m * eps)) {
+      // rcond is only meaningful for an invertible factor.
+      const bool invertible = lu.isInvertible();
+      const double rcond = invertible ? lu.rcond() : 0.0;
+      if (!invertible || !(rcond >= m_m * eps)) {
         out.status = FrictionalContactStatus::singular;
-        out.message = "singular Newton matrix at step " + std::to_string(it) +
-                      " (reciprocal condition " + str(rcond) + ", rank " +
-                      std::to_string(lu.rank()) + " of " + std::to_string(m_m) +
+        out.message = "singular Newton matrix at step " + std::to_string(it) + " (" +
+                      (invertible ? "reciprocal condition " + str(rcond)
+                                  : "rank " + std::to_string(lu.rank()) + " of " +
+                                        std::to_string(m_m)) +
                       "): W singular on the closed contacts' rows?";
         break;
       }

@@ -44,14 +44,23 @@
 // |q~_i| + sum_j |W_ij||lambda_j| and Lambda = max|lambda|, per contact by
 // its current piece:
 //   closed: |g| <= eta delta_n and lambda_n >= -eta Lambda;
-//           stick |s_k| <= eta delta_k; slip |lambda_t - mu lambda_n tau^|
-//           <= eta Lambda; rho = 0 (mu = 0): |lambda_t| <= eta Lambda;
+//           stick: |s_k| <= eta delta_k and |lambda_t| <= mu lambda_n + eta Lambda;
+//           slip:  ||lambda_t| - mu lambda_n| <= eta Lambda and
+//                  |lambda_t |s| + mu lambda_n s| <= eta Lambda delta_t;
+//           rho = 0 (mu = 0): |lambda_t| <= eta Lambda;
 //   open:   |lambda_n|, |lambda_t| <= eta Lambda and g >= -eta delta_n.
-// The round-off of q_i alone is up to gamma_{m+1} delta_i ~ (m + 1) eps
-// delta_i (Higham eq. 3.5); 4 (m + 1) eps leaves a factor 4 above that
-// floor. A converged solution passes certify() with the default threshold
-// theta = 64 (m + 1) eps: stick contacts of the solver lie inside the cone
-// and slip contacts on its edge within eta Lambda < theta Lambda.
+// These are the certificate's residuals (same q and delta, bit for bit), so
+// a converged solution has, with the default theta = 64 (m + 1) eps = 16 eta
+// (certify() then classes the solver's open contacts open, its slip
+// contacts slip, and calls stick only contacts the solver has in stick):
+// scaled penetration, negative lambda_n, complementarity <= eta; cone
+// violation <= (1 + mu) eta; stick residual <= sqrt(d) eta; slip residual
+// <= sqrt(d) max(1, 2 mu + eta) eta (a solver-slip contact: eta; a
+// solver-stick contact on the cone's edge: |s| <= sqrt(d) eta delta_t and
+// |lambda_t| + mu lambda_n <= (2 mu + eta) Lambda; mu = 0: |lambda_t| <=
+// eta Lambda and |s| <= sqrt(d) delta_t). The round-off of q_i alone is up to gamma_{m+1}
+// delta_i ~ (m + 1) eps delta_i (Higham eq. 3.5) at worst, sqrt(m + 1) eps
+// delta_i typically; eta = 4 (m + 1) eps leaves a factor 4 above the worst.
 //
 // Failure: singular Newton matrix (FullPivLU not invertible, or reciprocal
 // condition estimate below m eps; for a stick or closed contact this is W
