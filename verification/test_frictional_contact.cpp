@@ -27,7 +27,9 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-double eta(int m) { return 4.0 * (m + 1) * eps; }
+double eta(int m) {
+  return 4.0 * (m + 1) * eps;
+}
 
 FrictionalContactSolution solve_ok(const FrictionalContactProblem& p) {
   const FrictionalContactSolution s = FrictionalContactSolver().solve(p);
@@ -94,8 +96,7 @@ TEST(FrictionalContact, RejectsBadArguments) {
   EXPECT_THROW(certify(p, Eigen::VectorXd::Zero(2), 0.0), std::invalid_argument);
   EXPECT_THROW(certify(p, Eigen::VectorXd::Constant(2, NAN)), std::invalid_argument);
   EXPECT_THROW(FrictionalContactSolver({0}), std::invalid_argument);
-  EXPECT_THROW(FrictionalContactSolver().solve(p, Eigen::VectorXd::Zero(1)),
-               std::invalid_argument);
+  EXPECT_THROW(FrictionalContactSolver().solve(p, Eigen::VectorXd::Zero(1)), std::invalid_argument);
 }
 
 // ---------------------------------------------------------------------------
@@ -107,7 +108,7 @@ TEST(FrictionalContact, FrictionlessDiagonalExact) {
     const int b = 1 + d;
     Eigen::VectorXd diag(b * nc), g(nc), s(d * nc);
     for (int i = 0; i < b * nc; ++i)
-      diag(i) = 1e-9 * (1.0 + 0.37 * i); // [m/N]
+      diag(i) = 1e-9 * (1.0 + 0.37 * i);                             // [m/N]
     const double gaps[6] = {-1e-6, 2e-6, -3.3e-7, 0.0, -7e-6, 5e-8}; // [m]
     for (int c = 0; c < nc; ++c) {
       g(c) = gaps[c];
@@ -518,8 +519,8 @@ TEST(FrictionalContact, RandomProblemsCertified) {
         total[2] += cert.n_slip;
         max_iterations = std::max(max_iterations, sol.iterations);
       }
-  std::printf("over all: %d open, %d stick, %d slip; at most %d Newton steps\n", total[0],
-              total[1], total[2], max_iterations);
+  std::printf("over all: %d open, %d stick, %d slip; at most %d Newton steps\n", total[0], total[1],
+              total[2], max_iterations);
   // The set must exercise every class, or it tests less than it says.
   EXPECT_GT(total[0], 0);
   EXPECT_GT(total[1], 0);

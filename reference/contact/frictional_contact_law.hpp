@@ -23,16 +23,16 @@ namespace rsi {
 /// The output of FrictionalContactLaw::evaluate. Storage reused from call
 /// to call.
 struct FrictionalContactGeometry {
-  Eigen::VectorXd normal_gap;   ///< g~_c, nc entries [m], > 0 open
-  Eigen::VectorXd slip;         ///< s~_c, d nc entries (per contact t1 [, t2]) [m]
-  std::vector<SparseRow> rows;  ///< B, (1 + d) nc rows (per contact n, t1 [, t2])
+  Eigen::VectorXd normal_gap;  ///< g~_c, nc entries [m], > 0 open
+  Eigen::VectorXd slip;        ///< s~_c, d nc entries (per contact t1 [, t2]) [m]
+  std::vector<SparseRow> rows; ///< B, (1 + d) nc rows (per contact n, t1 [, t2])
 };
 
 class FrictionalContactLaw {
 public:
   virtual ~FrictionalContactLaw() = default;
   virtual int n_contacts() const = 0;
-  virtual int n_tangents() const = 0;           ///< d: 1 in 2D, 2 in 3D
+  virtual int n_tangents() const = 0;              ///< d: 1 in 2D, 2 in 3D
   virtual double friction_coefficient() const = 0; ///< mu >= 0
   /// Geometry of the step from t_n = t_next - dt to t_next, for the
   /// displacements u_n (`current`) and u~ (`predicted`) of the whole system.

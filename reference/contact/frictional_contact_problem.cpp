@@ -27,10 +27,10 @@ double ratio(double x, double scale) {
 
 } // namespace
 
-FrictionalContactProblem::FrictionalContactProblem(int n_tangents, double mu,
-                                                   const Eigen::Ref<const Eigen::MatrixXd>& w,
-                                                   const Eigen::Ref<const Eigen::VectorXd>& normal_gap,
-                                                   const Eigen::Ref<const Eigen::VectorXd>& slip)
+FrictionalContactProblem::FrictionalContactProblem(
+    int n_tangents, double mu, const Eigen::Ref<const Eigen::MatrixXd>& w,
+    const Eigen::Ref<const Eigen::VectorXd>& normal_gap,
+    const Eigen::Ref<const Eigen::VectorXd>& slip)
     : m_n_contacts(static_cast<int>(normal_gap.size()))
     , m_n_tangents(n_tangents)
     , m_mu(mu) {
@@ -86,14 +86,19 @@ FrictionalContactProblem::gaps_and_slips(const Eigen::Ref<const Eigen::VectorXd>
 
 const char* to_string(ContactClass c) {
   switch (c) {
-  case ContactClass::open: return "open";
-  case ContactClass::stick: return "stick";
-  case ContactClass::slip: return "slip";
+  case ContactClass::open:
+    return "open";
+  case ContactClass::stick:
+    return "stick";
+  case ContactClass::slip:
+    return "slip";
   }
   return "?";
 }
 
-double frictional_contact_default_theta(int n_unknowns) { return 64.0 * (n_unknowns + 1) * eps; }
+double frictional_contact_default_theta(int n_unknowns) {
+  return 64.0 * (n_unknowns + 1) * eps;
+}
 
 double FrictionalContactCertificate::worst() const {
   return std::max({penetration, negative_normal, complementarity, cone_violation, stick_residual,
@@ -181,8 +186,7 @@ FrictionalContactCertificate certify(const FrictionalContactProblem& problem,
     } else {
       ++r.n_slip;
       if (s_norm > 0.0)
-        r.max_slip_residual =
-            std::max(r.max_slip_residual, (lt + (mu * ln / s_norm) * s).norm());
+        r.max_slip_residual = std::max(r.max_slip_residual, (lt + (mu * ln / s_norm) * s).norm());
       const double bilinear = (s_norm * lt + (mu * ln) * s).norm();
       r.slip_residual = std::max(r.slip_residual, ratio(bilinear, scale * delta_t));
     }

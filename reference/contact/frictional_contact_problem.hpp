@@ -101,23 +101,24 @@ const char* to_string(ContactClass c);
 
 /// The residuals of the problem at one lambda (see the file comment).
 struct FrictionalContactCertificate {
-  std::vector<ContactClass> classes;   ///< per contact
-  double theta = 0.0;                   ///< classification threshold used
-  double force_scale = 0.0;            ///< Lambda [N]
+  std::vector<ContactClass> classes; ///< per contact
+  double theta = 0.0;                ///< classification threshold used
+  double force_scale = 0.0;          ///< Lambda [N]
   // Raw residuals, worst over contacts.
-  double max_penetration = 0.0;        ///< max(-g, 0) [m]
-  double min_normal = 0.0;             ///< min lambda_n [N]
-  double max_complementarity = 0.0;    ///< max |g lambda_n| [N m]
-  double max_cone_violation = 0.0;     ///< max(|lambda_t| - mu lambda_n, 0) [N]
-  double max_stick_residual = 0.0;     ///< max |s_c| over stick contacts [m]
-  double max_slip_residual = 0.0;      ///< max |lambda_t + mu lambda_n s/|s|| over slip contacts with s != 0 [N]
+  double max_penetration = 0.0;     ///< max(-g, 0) [m]
+  double min_normal = 0.0;          ///< min lambda_n [N]
+  double max_complementarity = 0.0; ///< max |g lambda_n| [N m]
+  double max_cone_violation = 0.0;  ///< max(|lambda_t| - mu lambda_n, 0) [N]
+  double max_stick_residual = 0.0;  ///< max |s_c| over stick contacts [m]
+  double max_slip_residual =
+      0.0; ///< max |lambda_t + mu lambda_n s/|s|| over slip contacts with s != 0 [N]
   // Scaled residuals (dimensionless, round-off is O(m eps)).
-  double penetration = 0.0;            ///< max(-g_c, 0) / delta_n
-  double negative_normal = 0.0;        ///< max(-lambda_n, 0) / Lambda
-  double complementarity = 0.0;        ///< |g lambda_n| / (delta_n Lambda)
-  double cone_violation = 0.0;         ///< max(|lambda_t| - mu lambda_n, 0) / Lambda
-  double stick_residual = 0.0;         ///< |s_c| / delta_t, stick contacts
-  double slip_residual = 0.0;          ///< |lambda_t |s| + mu lambda_n s| / (Lambda delta_t), slip contacts
+  double penetration = 0.0;     ///< max(-g_c, 0) / delta_n
+  double negative_normal = 0.0; ///< max(-lambda_n, 0) / Lambda
+  double complementarity = 0.0; ///< |g lambda_n| / (delta_n Lambda)
+  double cone_violation = 0.0;  ///< max(|lambda_t| - mu lambda_n, 0) / Lambda
+  double stick_residual = 0.0;  ///< |s_c| / delta_t, stick contacts
+  double slip_residual = 0.0; ///< |lambda_t |s| + mu lambda_n s| / (Lambda delta_t), slip contacts
   int n_open = 0;
   int n_stick = 0;
   int n_slip = 0;
@@ -135,8 +136,7 @@ double frictional_contact_default_theta(int n_unknowns);
 /// (0, 1) (throws std::invalid_argument otherwise, or for a wrong size or a
 /// non-finite lambda).
 FrictionalContactCertificate certify(const FrictionalContactProblem& problem,
-                                     const Eigen::Ref<const Eigen::VectorXd>& lambda,
-                                     double theta);
+                                     const Eigen::Ref<const Eigen::VectorXd>& lambda, double theta);
 /// The same with the default theta.
 FrictionalContactCertificate certify(const FrictionalContactProblem& problem,
                                      const Eigen::Ref<const Eigen::VectorXd>& lambda);

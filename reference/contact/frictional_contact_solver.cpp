@@ -132,11 +132,11 @@ public:
       const double rcond = invertible ? lu.rcond() : 0.0;
       if (!invertible || !(rcond >= m_m * eps)) {
         out.status = FrictionalContactStatus::singular;
-        out.message = "singular Newton matrix at step " + std::to_string(it) + " (" +
-                      (invertible ? "reciprocal condition " + str(rcond)
-                                  : "rank " + std::to_string(lu.rank()) + " of " +
-                                        std::to_string(m_m)) +
-                      "): W singular on the closed contacts' rows?";
+        out.message =
+            "singular Newton matrix at step " + std::to_string(it) + " (" +
+            (invertible ? "reciprocal condition " + str(rcond)
+                        : "rank " + std::to_string(lu.rank()) + " of " + std::to_string(m_m)) +
+            "): W singular on the closed contacts' rows?";
         break;
       }
       step = lu.solve(-f);
@@ -228,8 +228,8 @@ FrictionalContactSolver::solve(const FrictionalContactProblem& p,
       return s;
     }
     if (attempt == 1) first = s;
-    messages += (attempt > 1 ? "; " : "") + std::string("r = ") + str(factor) + "/W_nn: " +
-                s.message;
+    messages +=
+        (attempt > 1 ? "; " : "") + std::string("r = ") + str(factor) + "/W_nn: " + s.message;
   }
   first.iterations = iterations;
   first.attempts = attempt;

@@ -29,8 +29,8 @@ double ImposedGap::operator()(double theta) const {
   return value * (1.0 - 2.0 * std::exp(-x * x));
 }
 
-RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes,
-                                         const ImposedGap& gap, double omega, double mu)
+RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap,
+                                         double omega, double mu)
     : m_nodes(std::move(nodes))
     , m_gap(gap)
     , m_omega(omega)
@@ -40,8 +40,7 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes,
     throw std::invalid_argument(where + "nodes is empty, allowed at least one contact node");
   if (gap.kind == ImposedGap::Kind::constant) {
     if (!std::isfinite(gap.value))
-      throw std::invalid_argument(where + "constant gap = " + str(gap.value) +
-                                  ", allowed finite");
+      throw std::invalid_argument(where + "constant gap = " + str(gap.value) + ", allowed finite");
   } else {
     if (!(std::isfinite(gap.value) && gap.value > 0.0))
       throw std::invalid_argument(where + "oval gap g_m = " + str(gap.value) +
@@ -68,8 +67,7 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes,
     }
     const Eigen::Vector3d& x = node.position;
     if (!x.allFinite())
-      throw std::invalid_argument(where + "node " + std::to_string(c) +
-                                  " position must be finite");
+      throw std::invalid_argument(where + "node " + std::to_string(c) + " position must be finite");
     const double r = std::hypot(x(0), x(1));
     if (!(r > 0.0))
       throw std::invalid_argument(where + "node " + std::to_string(c) +
@@ -158,9 +156,9 @@ std::vector<RigidSurfaceNode> rigid_surface_nodes(const Component& component,
   std::vector<RigidSurfaceNode> nodes;
   for (int id : node_ids) {
     RigidSurfaceNode node;
-    const auto at = std::lower_bound(
-        component.nodes.begin(), component.nodes.end(), id,
-        [](const ComponentNode& n, int value) { return n.id < value; });
+    const auto at =
+        std::lower_bound(component.nodes.begin(), component.nodes.end(), id,
+                         [](const ComponentNode& n, int value) { return n.id < value; });
     if (at == component.nodes.end() || at->id != id)
       throw std::invalid_argument(where + "node " + std::to_string(id) + " not in component '" +
                                   component.name + "'");

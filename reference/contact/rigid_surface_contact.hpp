@@ -37,6 +37,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include "component.hpp"
 #include "frictional_contact_law.hpp"
@@ -47,7 +48,7 @@ namespace rsi {
 struct ImposedGap {
   enum class Kind { constant, oval };
   Kind kind = Kind::constant;
-  double value = 0.0; ///< g0 for constant; g_m > 0 for oval [length]
+  double value = 0.0;  ///< g0 for constant; g_m > 0 for oval [length]
   double width = 0.15; ///< w of the oval, > 0
 
   static ImposedGap constant(double g0) { return {Kind::constant, g0, 0.15}; }
@@ -57,16 +58,16 @@ struct ImposedGap {
 };
 
 struct RigidSurfaceNode {
-  std::array<int, 3> dofs{{-1, -1, -1}}; ///< system indices of ux, uy, uz
+  std::array<int, 3> dofs{{-1, -1, -1}};              ///< system indices of ux, uy, uz
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< undeformed X
 };
 
 struct ContactFrame {
-  Eigen::Vector3d normal;    ///< e_n
-  Eigen::Vector3d tangent1;  ///< e_t1
-  Eigen::Vector3d tangent2;  ///< e_t2
-  double radius = 0.0;       ///< r = |(x, y)|
-  double angle = 0.0;        ///< phi = atan2(y, x)
+  Eigen::Vector3d normal;   ///< e_n
+  Eigen::Vector3d tangent1; ///< e_t1
+  Eigen::Vector3d tangent2; ///< e_t2
+  double radius = 0.0;      ///< r = |(x, y)|
+  double angle = 0.0;       ///< phi = atan2(y, x)
 };
 
 class RigidSurfaceContact : public FrictionalContactLaw {
@@ -111,7 +112,6 @@ private:
 /// offset. Throws std::invalid_argument naming the node if it is missing or
 /// lacks one of the three translations, or for offset < 0.
 std::vector<RigidSurfaceNode> rigid_surface_nodes(const Component& component,
-                                                  const std::vector<int>& node_ids,
-                                                  int offset = 0);
+                                                  const std::vector<int>& node_ids, int offset = 0);
 
 } // namespace rsi
