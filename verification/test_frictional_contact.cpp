@@ -121,10 +121,13 @@ TEST(FrictionalContact, FrictionlessDiagonalExact) {
     std::printf("d = %d: %d Newton steps\n", d, sol.iterations);
     for (int c = 0; c < nc; ++c) {
       const double exact = std::max(0.0, -g(c) / diag(b * c));
-      // Exact: -g~/w. The solver's Newton step on a closed contact forms
-      // r = 1/w, r g~ and r w, and divides: 4 roundings, 4 eps relative.
+      // Exact: -g~/w, one rounding. The solver's one Newton step from 0 on a
+      // closed contact (frictional_contact_solver.cpp): F = r g~ and J = r w
+      // (r cancels), equilibrated S J S^-1 (s J, then times 1/s: 3 roundings
+      // that do not cancel), right-hand side s F, the pivot division and
+      // its product, step / s: 9 roundings; 9 + 1 = 10 eps relative.
       std::printf("  contact %d: lambda_n %.17g exact %.17g\n", c, sol.lambda(b * c), exact);
-      EXPECT_LE(std::abs(sol.lambda(b * c) - exact), 4 * eps * exact);
+      EXPECT_LE(std::abs(sol.lambda(b * c) - exact), 10 * eps * exact);
       for (int k = 0; k < d; ++k) {
         // mu = 0: lambda_t = 0 exactly (identity rows of the Newton matrix), and
         // the slip is the predicted one (W diagonal): s = s~ exactly.
@@ -292,17 +295,17 @@ void check_single(int d, double mu, double g, const Eigen::VectorXd& s, ContactC
               d, mu, g, s.norm(), to_string(cert.classes[0]), sol.iterations, sol.lambda(0),
               exact.lambda_n, (sol.lambda.tail(d) - exact.lambda_t).norm());
   EXPECT_EQ(cert.classes[0], expected);
-  // Exact lambda_n = -g~/w_n: the solver forms r = 1/w_n, r g~, r w_n and
-  // divides (the other rows do not couple): 4 roundings, 4 eps relative.
-  EXPECT_LE(std::abs(sol.lambda(0) - exact.lambda_n), 4 * eps * exact.lambda_n);
-  // lambda_t: stick -s~/w_t by the same 4 roundings (per component, so
-  // 4 eps |lambda_t| in norm); slip -mu lambda_n s~/|s~|: lambda_n to 4 eps,
-  // the product with mu and the normalisation (a norm of d <= 2 squares,
-  // a square root, a division: 4 more roundings) and, in 3D, the
+  // Exact lambda_n = -g~/w_n: 10 eps relative, as in FrictionlessDiagonalExact
+  // (the rows do not couple).
+  EXPECT_LE(std::abs(sol.lambda(0) - exact.lambda_n), 10 * eps * exact.lambda_n);
+  // lambda_t: stick -s~/w_t by the same 10 roundings (per component, so
+  // 10 eps |lambda_t| in norm); slip -mu lambda_n s~/|s~|: lambda_n to 10
+  // eps, the product with mu and the normalisation (a norm of d <= 2
+  // squares, a square root, a division: 4 more roundings) and, in 3D, the
   // semismooth Newton's last step, stopped at eta = 4 (m + 1) eps relative
-  // to Lambda (m = 3: 16 eps): 4 + 4 + 16 = 24 eps relative to Lambda.
+  // to Lambda (m = 3: 16 eps): 10 + 4 + 16 = 30 eps relative to Lambda.
   const double lambda_scale = std::max(exact.lambda_n, exact.lambda_t.norm());
-  EXPECT_LE((sol.lambda.tail(d) - exact.lambda_t).norm(), 24 * eps * lambda_scale);
+  EXPECT_LE((sol.lambda.tail(d) - exact.lambda_t).norm(), 30 * eps * lambda_scale);
   expect_certified(p, cert);
 }
 
@@ -380,7 +383,7 @@ TEST(FrictionalContact, SingleContact3DAnisotropicSlip) {
   // relative to Lambda: 2 + 8 + 16 = 26 eps relative to Lambda.
   const double scale = std::max(-g / wn, lambda_t.norm());
   EXPECT_LE((sol.lambda.tail(2) - lambda_t).norm(), 26 * eps * scale);
-  EXPECT_LE(std::abs(sol.lambda(0) + g / wn), 4 * eps * (-g / wn)); // as in check_single
+  EXPECT_LE(std::abs(sol.lambda(0) + g / wn), 10 * eps * (-g / wn)); // as in check_single
   expect_certified(p, cert);
 }
 
@@ -525,6 +528,82 @@ TEST(FrictionalContact, RandomProblemsCertified) {
   EXPECT_GT(total[0], 0);
   EXPECT_GT(total[1], 0);
   EXPECT_GT(total[2], 0);
+}
+
+// Robustness: rows of B scaled over 6 decades (10^[-3, 3]: W's diagonal
+// over 12), every contact coupled to every other, 1 to 22 contacts, slips
+// from 1e-10 to 1e-6 m. The solver's assumption (frictional_contact_solver.hpp)
+// is kappa = max_c mu |W_nt,c| / W_nn,c < 1: there every problem must be
+// solved and certified. Outside it a failure is allowed but must be
+// reported as one (status and message); the counts are printed.
+TEST(FrictionalContact, ScaledCoupledProblems) {
+  std::mt19937 rng(2007);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int in_regime = 0, outside = 0, outside_failed = 0, fallback = 0, max_iterations = 0;
+  for (int d = 1; d <= 2; ++d)
+    for (double mu : {0.0, 0.15, 0.5, 1.0})
+      for (int trial = 0; trial < 100; ++trial) {
+        const int nc = 1 + trial % 22;
+        const int m = (1 + d) * nc, n = m + 5;
+        Eigen::MatrixXd a(n, n), b(m, n);
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j)
+            a(i, j) = u(rng);
+        for (int i = 0; i < m; ++i) {
+          const double row_scale = std::pow(10.0, 3.0 * u(rng));
+          for (int j = 0; j < n; ++j)
+            b(i, j) = row_scale * u(rng);
+        }
+        const Eigen::MatrixXd mass = a * a.transpose() + n * Eigen::MatrixXd::Identity(n, n);
+        const Eigen::LLT<Eigen::MatrixXd> llt(mass);
+        ASSERT_EQ(llt.info(), Eigen::Success);
+        const Eigen::MatrixXd x = llt.matrixL().solve(b.transpose());
+        Eigen::MatrixXd w = 1e-8 * (x.transpose() * x);
+        w = 0.5 * (w + w.transpose()).eval();
+        Eigen::VectorXd g(nc), s(d * nc);
+        for (int c = 0; c < nc; ++c)
+          g(c) = 1e-6 * u(rng);
+        const double slip_scale = std::pow(10.0, -8.0 + 2.0 * u(rng));
+        for (int i = 0; i < d * nc; ++i)
+          s(i) = slip_scale * u(rng);
+        double kappa = 0.0;
+        for (int c = 0; c < nc; ++c) {
+          const int k = (1 + d) * c;
+          kappa = std::max(kappa, mu * w.block(k, k + 1, 1, d).norm() / w(k, k));
+        }
+        const FrictionalContactProblem p(d, mu, w, g, s);
+        const FrictionalContactSolution sol = FrictionalContactSolver().solve(p);
+        if (kappa < 1.0) {
+          ++in_regime;
+          ASSERT_TRUE(sol.ok()) << "kappa " << kappa << ": " << sol.message;
+          const FrictionalContactCertificate cert = certify(p, sol.lambda);
+          const double e = eta(m);
+          // The bounds of expect_certified (printing each would flood the log).
+          EXPECT_LE(cert.penetration, e);
+          EXPECT_LE(cert.negative_normal, e);
+          EXPECT_LE(cert.complementarity, e);
+          EXPECT_LE(cert.cone_violation, (1.0 + mu) * e);
+          EXPECT_LE(cert.stick_residual, std::sqrt(double(d)) * e);
+          EXPECT_LE(cert.slip_residual, std::sqrt(double(d)) * std::max(1.0, 2.0 * mu + e) * e);
+        } else {
+          ++outside;
+          if (!sol.ok()) {
+            ++outside_failed;
+            EXPECT_FALSE(sol.message.empty());
+          } else {
+            // A solution returned as converged is certified whatever kappa.
+            EXPECT_LE(certify(p, sol.lambda).complementarity, eta(m));
+          }
+        }
+        fallback += sol.sweeps > 0;
+        max_iterations = std::max(max_iterations, sol.iterations);
+      }
+  std::printf("kappa < 1: %d problems, all solved and certified; kappa >= 1: %d problems, %d "
+              "reported unsolved; Gauss-Seidel fallback used %d times; at most %d Newton steps\n",
+              in_regime, outside, outside_failed, fallback, max_iterations);
+  // The family must put enough problems in the regime it tests (251 of 800
+  // with this seed: kappa grows with the row-scale spread).
+  EXPECT_GE(in_regime, 200);
 }
 
 // ---------------------------------------------------------------------------

@@ -248,12 +248,12 @@ TEST(RigidSurfaceContact, OneStepSlipDragsNodeWithCasing) {
               sol.lambda(1), sol.lambda(2), lambda_n, -mu * lambda_n, cert.summary().c_str());
   EXPECT_EQ(cert.classes[0], ContactClass::slip);
   // W = dt^2/m B B^T with B orthonormal to 12 eps (frame test): W = dt^2/m
-  // (I + E), |E| <= 12 eps; lambda_n = -g~/W_nn to 12 eps + 4 roundings of
-  // the solver (test_frictional_contact) = 16 eps relative; lambda_t adds
-  // the solver's stopping level eta = 4 * 4 eps = 16 eps of Lambda: 32 eps.
-  EXPECT_LE(std::abs(sol.lambda(0) - lambda_n), 16 * eps * lambda_n);
-  EXPECT_LE(std::abs(sol.lambda(1)), 32 * eps * lambda_n);
-  EXPECT_LE(std::abs(sol.lambda(2) + mu * lambda_n), 32 * eps * lambda_n);
+  // (I + E), |E| <= 12 eps; lambda_n = -g~/W_nn to 12 eps + the solver's
+  // 10 roundings (test_frictional_contact) = 22 eps relative; lambda_t adds
+  // the solver's stopping level eta = 4 * 4 eps = 16 eps of Lambda: 38 eps.
+  EXPECT_LE(std::abs(sol.lambda(0) - lambda_n), 22 * eps * lambda_n);
+  EXPECT_LE(std::abs(sol.lambda(1)), 38 * eps * lambda_n);
+  EXPECT_LE(std::abs(sol.lambda(2) + mu * lambda_n), 38 * eps * lambda_n);
   // The force on the node, B^T lambda, against the casing's velocity: same
   // direction in the tangent plane.
   const Eigen::Vector3d force = b.transpose() * sol.lambda;
