@@ -30,8 +30,8 @@
 // (W_n, W_t: the rows of W of the contact; e, E: rows of the identity).
 // The Newton system is equilibrated, S J S^-1 (S dx) = -S F with S =
 // diag(W)^1/2: on closed rows it is W's correlation matrix, on open rows the
-// identity, whatever the scale of each row of B, so that FullPivLU's rank
-// and rcond decide singularity on a meaningful matrix; the merit function
+// identity, whatever the scale of each row of B, so that the condition
+// estimate decides singularity on a meaningful matrix; the merit function
 // of the line search is 1/2 |S F|^2 for the same reason.
 //
 // Why this algorithm: it treats the three states of every contact in one
@@ -54,7 +54,9 @@
 // B over 6 decades, all contacts coupled, 1-22 contacts, mu up to 1): every
 // problem with kappa = max_c mu |W_nt,c| / W_nn,c < 1 (251 of 800) solved
 // and certified; of the 549 with kappa >= 1 (up to 6e4), 15 reported
-// unsolved. Dense linear algebra (Eigen's FullPivLU, m = (1 + d) nc <= 66).
+// unsolved. Dense linear algebra: Eigen's PartialPivLU and its rcond() (m = (1 + d) nc
+// <= 66; measured 127 us for 22 random coupled 2D contacts from lambda = 0,
+// 155 us for 16 in 3D, 6-8 us from a warm start at the solution).
 //
 // Stopping test (natural residuals, the certificate's scales of
 // frictional_contact_problem.hpp): with eta = 4 (m + 1) eps, delta_i =
@@ -79,8 +81,8 @@
 // delta_i ~ (m + 1) eps delta_i (Higham eq. 3.5) at worst, sqrt(m + 1) eps
 // delta_i typically; eta = 4 (m + 1) eps leaves a factor 4 above the worst.
 //
-// Failure: singular Newton matrix (FullPivLU of the equilibrated matrix not
-// invertible, or its reciprocal condition estimate below m eps; for a
+// Failure: singular Newton matrix (the reciprocal condition estimate of the
+// equilibrated matrix below m eps, or NaN for a zero pivot; for a
 // stick or closed contact this is W singular on the active rows: the
 // multipliers are then not unique), no decrease along the Newton direction
 // (step below 2^-30), iteration limit, Gauss-Seidel not settling. Status and
