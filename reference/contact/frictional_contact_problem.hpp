@@ -27,7 +27,7 @@
 // Units: g, s and q in the model's length unit [m], lambda in its force
 // unit [N], W [m/N] (SI in the comments; Rotor 37 runs in mm and N).
 //
-// Certificate (frictional_contact_certificate below): the residuals of
+// Certificate (FrictionalContactCertificate and certify() below): the residuals of
 // these conditions at a given lambda, raw and scaled, and the class of each
 // contact. Scales, from the arithmetic of q = q~ + W lambda: row i of q is a
 // sum of m + 1 terms (m = (1+d) nc), so its round-off is at most
@@ -55,7 +55,7 @@
 // Which classification the rest of the project should trust: the classes
 // only select which law's residual applies; every condition of the problem
 // is covered by one residual whatever the class (an open contact's
-// lambda_t is bounded by the cone residual, as |lambda_t| <= mu theta Lambda).
+// |lambda_t| <= mu theta Lambda + its cone violation).
 
 #include <string>
 #include <vector>

@@ -135,10 +135,10 @@ public:
       }
       // Equilibrated: S J S^-1 (S = diag(W)^1/2) has the rows of W's
       // correlation matrix on closed rows and of the identity on open ones,
-      // whatever the scale of each row of B; rank and rcond mean something.
+      // whatever the scale of each row of B; rcond means something.
       j = m_s.asDiagonal() * j * m_s.cwiseInverse().asDiagonal();
       lu.compute(j);
-      // Partial pivoting (a third of FullPivLU's time here); an exactly
+      // Partial pivoting (about half of FullPivLU's time here); an exactly
       // singular matrix gives a zero pivot, hence rcond 0 (or NaN).
       const double rcond = lu.rcond();
       if (!(rcond >= m_m * eps)) {
