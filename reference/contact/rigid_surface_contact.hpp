@@ -1,0 +1,117 @@
+#pragma once
+// Node-to-rigid-surface contact in 3D (SPEC §8; issue 12 item 1; the
+// rubbing case of shared/external/rotor37/README.md): a rigid casing turns
+// at -Omega past the contact nodes of a blade (seen in the blade's frame),
+// with a gap imposed as a function of time and node.
+//
+// Per contact node c, from its undeformed position X = (x, y, z), with
+// radius r = |(x, y)| > 0 and polar angle phi = atan2(y, x):
+//   frame    e_n  = -(x, y, 0) / r    (inward: a displacement along e_n opens)
+//            e_t1 = (0, 0, 1)         (axial)
+//            e_t2 = e_n x e_t1 = (-sin phi, cos phi, 0)
+//            (e_n, e_t1, e_t2) orthonormal and right-handed; e_t2 points
+//            along the rotation for Omega > 0.
+//   gap      g_c(t, u) = g0_c(t) + e_n . u_c        (> 0 open)
+//            g0 constant, or the oval casing of the README:
+//            g0(t) = g_m (1 - 2 exp(-((mod(theta, pi)/pi - 1/2)/w)^2)),
+//            theta = Omega t + phi, mod the floored modulo (as MATLAB's),
+//            w = 0.15; period pi/Omega in t, minimum -g_m at
+//            mod(theta, pi) = pi/2, g_m (1 - 2 exp(-1/(4 w^2))) at the ends.
+//            Moving the node by u_c along e_n increases g by |u_c|: opens.
+//   casing   velocity -r Omega e_t2 (the casing slides past the tip
+//            backwards), so over a step of dt it moves by -r Omega dt e_t2.
+// For the step t_n -> t_{n+1} = t_next, with u_n and the prediction u~:
+//   g~_c = g0_c(t_{n+1}) + e_n . u~_c
+//   s~_c = (e_t1 . (u~_c - u_n,c),  e_t2 . (u~_c - u_n,c) + r Omega dt)
+//          (the node's tangential increment relative to the casing: a node
+//          at rest slides by +r Omega dt along e_t2)
+//   B_c  = rows e_n^T, e_t1^T, e_t2^T on the node's dofs (ux, uy, uz),
+// exact (the law is linear in u): g and s of u_{n+1} = u~ + du are g~ + G du
+// and s~ + T du. Small displacements: frame, radius and angle are those of
+// the undeformed node (as NLstep's rubbing example does).
+//
+// Units: those of the model (mm, s and rad/s for Rotor 37). Owns copies of
+// its data.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "component.hpp"
+#include "frictional_contact_law.hpp"
+
+namespace rsi {
+
+/// The imposed gap g0(t, phi): a constant, or the oval casing.
+struct ImposedGap {
+  enum class Kind { constant, oval };
+  Kind kind = Kind::constant;
+  double value = 0.0;  ///< g0 for constant; g_m > 0 for oval [length]
+  double width = 0.15; ///< w of the oval, > 0
+
+  static ImposedGap constant(double g0) { return {Kind::constant, g0, 0.15}; }
+  static ImposedGap oval(double g_m, double width = 0.15) { return {Kind::oval, g_m, width}; }
+  /// g0 at theta = Omega t + phi (any finite theta).
+  double operator()(double theta) const;
+};
+
+struct RigidSurfaceNode {
+  std::array<int, 3> dofs{{-1, -1, -1}};              ///< system indices of ux, uy, uz
+  Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< undeformed X
+};
+
+struct ContactFrame {
+  Eigen::Vector3d normal;   ///< e_n
+  Eigen::Vector3d tangent1; ///< e_t1
+  Eigen::Vector3d tangent2; ///< e_t2
+  double radius = 0.0;      ///< r = |(x, y)|
+  double angle = 0.0;       ///< phi = atan2(y, x)
+};
+
+class RigidSurfaceContact : public FrictionalContactLaw {
+public:
+  /// nodes: at least one; dofs >= 0 and all distinct; positions finite with
+  /// r > 0. gap: constant finite, or oval with g_m > 0 and width > 0 finite.
+  /// omega finite (any sign; 0: no sliding, constant oval). mu >= 0 finite.
+  /// Throws std::invalid_argument naming the parameter and its range.
+  RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap, double omega,
+                      double mu);
+
+  int n_contacts() const override { return static_cast<int>(m_nodes.size()); }
+  int n_tangents() const override { return 2; }
+  double friction_coefficient() const override { return m_mu; }
+  /// current, predicted: same size, every node dof inside; t_next finite;
+  /// dt > 0 finite. Throws std::invalid_argument otherwise.
+  void evaluate(const Eigen::Ref<const Eigen::VectorXd>& current,
+                const Eigen::Ref<const Eigen::VectorXd>& predicted, double t_next, double dt,
+                FrictionalContactGeometry& out) const override;
+  /// The 3 n_contacts node dofs (throws std::invalid_argument if one is
+  /// outside n_dofs).
+  std::vector<int> dofs_read(int n_dofs) const override;
+
+  const ContactFrame& frame(int contact) const { return m_frames.at(contact); }
+  const RigidSurfaceNode& node(int contact) const { return m_nodes.at(contact); }
+  /// g0_c(t), the gap at zero displacement.
+  double imposed_gap(int contact, double t) const;
+  /// The casing's velocity at the node, -r Omega e_t2.
+  Eigen::Vector3d casing_velocity(int contact) const;
+  double rotation_speed() const { return m_omega; }
+
+private:
+  std::vector<RigidSurfaceNode> m_nodes;
+  std::vector<ContactFrame> m_frames;
+  ImposedGap m_gap;
+  double m_omega;
+  double m_mu;
+};
+
+/// The contact nodes `node_ids` of a 3D component (dof kinds ux, uy, uz,
+/// coordinates from component.nodes), with system dof = component dof +
+/// offset. Throws std::invalid_argument naming the node if it is missing or
+/// lacks one of the three translations, or for offset < 0.
+std::vector<RigidSurfaceNode> rigid_surface_nodes(const Component& component,
+                                                  const std::vector<int>& node_ids, int offset = 0);
+
+} // namespace rsi

@@ -1,0 +1,116 @@
+#include "tip_ring_frictional_contact.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "ring_element.hpp"
+
+namespace rsi {
+
+TipRingFrictionalContact::TipRingFrictionalContact(const BladedDisk& bladed_disk,
+                                                   const Casing& casing, const Case& c)
+    : m_tip_radial(bladed_disk.tip_radial)
+    , m_tip_tangential(bladed_disk.tip_tangential)
+    , m_casing_elements(casing.n_elements)
+    , m_tip_radius(c.bladed_disk.tip_radius)
+    , m_casing_radius(casing.radius)
+    , m_omega(c.operating_point.rotation_speed)
+    , m_mu(c.operating_point.friction_coefficient) {
+  for (int k = 0; k < bladed_disk.n_sectors; ++k)
+    m_tip_angle0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
+  for (int first : casing.node_first_dof)
+    m_casing_node_dof.push_back(first < 0 ? -1 : bladed_disk.n_dofs() + first);
+}
+
+std::vector<int> TipRingFrictionalContact::dofs_read(int n_dofs) const {
+  std::vector<int> dofs(m_tip_radial);
+  dofs.insert(dofs.end(), m_tip_tangential.begin(), m_tip_tangential.end());
+  for (int first : m_casing_node_dof)
+    if (first >= 0)
+      for (int d = 0; d < 4; ++d) // u, u_s, v, v_s
+        dofs.push_back(first + d);
+  for (int dof : dofs)
+    if (dof < 0 || dof >= n_dofs)
+      throw std::invalid_argument("TipRingFrictionalContact: dof " + std::to_string(dof) +
+                                  " outside a system of " + std::to_string(n_dofs) +
+                                  " dofs, allowed [0, n_dofs)");
+  return dofs;
+}
+
+void TipRingFrictionalContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& current,
+                                        const Eigen::Ref<const Eigen::VectorXd>& predicted,
+                                        double t_next, double dt,
+                                        FrictionalContactGeometry& out) const {
+  const std::string where = "TipRingFrictionalContact::evaluate: ";
+  if (current.size() != predicted.size())
+    throw std::invalid_argument(where + "current has " + std::to_string(current.size()) +
+                                " entries and predicted " + std::to_string(predicted.size()) +
+                                ", allowed equal sizes");
+  if (!std::isfinite(t_next)) throw std::invalid_argument(where + "t_next must be finite");
+  if (!(std::isfinite(dt) && dt > 0.0))
+    throw std::invalid_argument(where + "dt must be in (0, inf)");
+  const int nc = n_contacts();
+  const double pitch = 2.0 * M_PI / m_casing_elements;
+  const double arc = m_casing_radius * pitch;
+  out.normal_gap.resize(nc);
+  out.slip.resize(nc);
+  out.rows.resize(2 * nc);
+  for (int k = 0; k < nc; ++k) {
+    const int iu = m_tip_radial[k];
+    const int iv = m_tip_tangential[k];
+    if (iu >= predicted.size() || iv >= predicted.size())
+      throw std::invalid_argument(where + "tip dof outside vectors of " +
+                                  std::to_string(predicted.size()) + " entries");
+    // The casing point the tip faces, as TipCasingContact::evaluate.
+    double alpha =
+        std::fmod(m_tip_angle0[k] + m_omega * t_next + predicted(iv) / m_tip_radius, 2.0 * M_PI);
+    if (alpha < 0.0) alpha += 2.0 * M_PI;
+    int element = static_cast<int>(std::floor(alpha / pitch));
+    double xi = alpha / pitch - element;
+    if (element >= m_casing_elements) { // alpha within round-off of 2 pi
+      element = m_casing_elements - 1;
+      xi = 1.0;
+    }
+    const Eigen::Vector4d n = hermite_values(xi, arc);
+    int first[2];
+    int n_nodes = 0;
+    int shape_offset[2];
+    for (int node = 0; node < 2; ++node) {
+      const int j = element + node == m_casing_elements ? 0 : element + node;
+      if (m_casing_node_dof[j] < 0) continue; // the clamped node: zero displacement
+      first[n_nodes] = m_casing_node_dof[j];
+      shape_offset[n_nodes++] = 2 * node;
+    }
+    double u_casing = 0.0;
+    double v_casing_increment = 0.0;
+    for (int a = 0; a < n_nodes; ++a)
+      for (int d = 0; d < 2; ++d) {
+        const double shape = n(shape_offset[a] + d);
+        if (first[a] + 2 + d >= predicted.size())
+          throw std::invalid_argument(where + "casing dof outside vectors of " +
+                                      std::to_string(predicted.size()) + " entries");
+        u_casing += shape * predicted(first[a] + d);
+        v_casing_increment += shape * (predicted(first[a] + 2 + d) - current(first[a] + 2 + d));
+      }
+    out.normal_gap(k) = m_casing_radius + u_casing - (m_tip_radius + predicted(iu));
+    out.slip(k) = m_omega * (m_tip_radius + predicted(iu)) * dt + (predicted(iv) - current(iv)) -
+                  v_casing_increment;
+    SparseRow& normal = out.rows[2 * k];
+    SparseRow& tangent = out.rows[2 * k + 1];
+    const int length = 1 + 2 * n_nodes;
+    normal.resize(length);
+    tangent.resize(length);
+    normal[0] = {iu, -1.0};
+    tangent[0] = {iv, 1.0};
+    for (int a = 0; a < n_nodes; ++a)
+      for (int d = 0; d < 2; ++d) {
+        const double shape = n(shape_offset[a] + d);
+        normal[1 + 2 * a + d] = {first[a] + d, shape};
+        tangent[1 + 2 * a + d] = {first[a] + 2 + d, -shape};
+      }
+  }
+}
+
+} // namespace rsi
