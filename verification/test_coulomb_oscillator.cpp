@@ -22,6 +22,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <ostream>
 #include <stdexcept>
 #include <vector>
 
@@ -430,12 +431,49 @@ TEST(CoulombForced, FrictionlessLimit) {
         rounding(motion_scale(o, xs, vs) + std::abs(big_x), r.segments().size());
     std::printf("mu N = %.0e: %zu segments, max |x - x_h| = %.3e, max |e| / (mu N t/(m w0)) = "
                 "%.3f, round-off tol %.3e\n",
-                limit, r.segments().size(), worst, bound_ratio, round_off);
+                limit, r.segments().size(), worst, limit > 0.0 ? bound_ratio : 0.0, round_off);
     if (limit == 0.0)
       EXPECT_LE(worst, round_off);
     else
       EXPECT_LE(worst, limit * window / (o.mass * w0) + round_off);
   }
+}
+
+// Exact resonance w = w0 without friction: the textbook solution
+// x = x0 cos w0 t + B sin w0 t - P t cos(w0 t + phi)/(2 m w0),
+// B = (v0 + P cos(phi)/(2 m w0))/w0, against the closed form's sinc
+// formulation of C and S at w = w0 (coulomb_oscillator.cpp).
+TEST(CoulombForced, ResonantFrictionless) {
+  Oscillator o = base();
+  o.friction_coefficient = 0.0;
+  o.force_amplitude = 3.0;
+  o.forcing_frequency = natural_frequency(o);
+  o.forcing_phase = 0.7;
+  o.x0 = 0.05;
+  o.v0 = 0.3;
+  const double w0 = natural_frequency(o);
+  const double p = o.force_amplitude;
+  const double b = (o.v0 + p * std::cos(o.forcing_phase) / (2.0 * o.mass * w0)) / w0;
+  auto x_h = [&](double t) {
+    return o.x0 * std::cos(w0 * t) + b * std::sin(w0 * t) -
+           p * t * std::cos(w0 * t + o.forcing_phase) / (2.0 * o.mass * w0);
+  };
+  const double window = 10.0;
+  const ForcedResponse r(o, window);
+  ASSERT_TRUE(r.ok()) << r.failure();
+  const std::vector<double> t = grid(window, 1000);
+  std::vector<double> xs, vs;
+  double worst = 0.0;
+  for (double ti : t) {
+    xs.push_back(r.x(ti));
+    vs.push_back(r.v(ti));
+    worst = std::max(worst, std::abs(xs.back() - x_h(ti)));
+  }
+  const double tol = rounding(motion_scale(o, xs, vs), r.segments().size());
+  std::printf("resonance w = w0, mu = 0: %zu segments, max |x - x_h| = %.3e (tol %.3e), "
+              "max |x| = %.3f\n",
+              r.segments().size(), worst, tol, *std::max_element(xs.begin(), xs.end()));
+  EXPECT_LE(worst, tol);
 }
 
 // ------------------------------------------------------------ against rk8pd
@@ -449,6 +487,10 @@ struct OdeCase {
   double v0;
   double window;
 };
+
+void PrintTo(const OdeCase& c, std::ostream* os) {
+  *os << c.name;
+}
 
 class CoulombVsOde : public ::testing::TestWithParam<OdeCase> {};
 
