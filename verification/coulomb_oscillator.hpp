@@ -50,7 +50,13 @@
 // only: f = lambda_t, |lambda_t| <= mu lambda_n = mu N. The normal motion
 // is static (gap 0, lambda_n = N exactly) and does not couple to x. Slip+
 // is sliding along +t (lambda_t = -mu N), stick is a zero tangential
-// increment. Counts: stick_slip counts stick <-> slip changes, reversals
+// increment. For lambda_n = N from the first step, start the node at gap 0
+// with zero normal velocity and the normal load applied from t = 0 (an
+// initial normal impact would make lambda_n differ from N). In 3D, put the
+// spring and P along one tangent t1 and nothing along t2: the exact slip
+// direction is then +-t1, so the 3D law's slip direction (in the tangent
+// plane) is checked as well; the lead's x is the node's t1 displacement
+// relative to the (fixed) plane. Counts: stick_slip counts stick <-> slip changes, reversals
 // counts slip+ <-> slip- changes (summary.json's stick_slip_transitions and
 // sliding_reversals).
 //

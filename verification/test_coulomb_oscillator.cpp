@@ -163,6 +163,31 @@ TEST(CoulombFree, HandComputedTurningPoints) {
   EXPECT_EQ(still.transitions().stick_slip + still.transitions().reversals, 0);
 }
 
+// Hand arithmetic at the edge of the stick band: from x0 = -0.2002 at rest
+// the turning points are -0.2002, 0.1202, -0.0402 (k|x| = 2.01 > mu N = 2:
+// the mass must reverse), then 2(-0.04) + 0.0402 = -0.0398 (k|x| = 1.99:
+// rest). The event solver (force balance at each stop) must agree.
+TEST(CoulombFree, ReversesJustOutsideStickBand) {
+  Oscillator o = base();
+  o.x0 = -0.2002;
+  const ForcedResponse r(o, 2.0);
+  ASSERT_TRUE(r.ok()) << r.failure();
+  const std::vector<double> expected = {-0.2002, 0.1202, -0.0402, -0.0398};
+  const std::vector<Motion> motions = {Motion::slip_positive, Motion::slip_negative,
+                                       Motion::slip_positive, Motion::stick};
+  ASSERT_EQ(r.segments().size(), expected.size());
+  // Each stop is a reflection about +-d (2 operations on numbers <= 0.21,
+  // 2 eps 0.21 each) plus the slip closed form's round-off (16 eps A per segment).
+  const double tol = rounding(0.21 + 0.04, expected.size()) + 4.0 * eps * 0.21 * 4;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const Segment& s = r.segments()[i];
+    std::printf("segment %zu: %s from t = %.15f at x = %.15f (hand %.4f)\n", i, to_string(s.motion),
+                s.start, s.x_start, expected[i]);
+    EXPECT_EQ(s.motion, motions[i]);
+    EXPECT_NEAR(s.x_start, expected[i], tol);
+  }
+}
+
 /// The free-vibration properties on any segment list ending at rest:
 /// per slip segment between turning points, the amplitude about its centre
 /// c = -s d is kept (|x_end - c| = |x_start - c|), the next half-cycle's
