@@ -82,6 +82,11 @@ std::string summary_json(const RunSummary& s) {
   j["max_complementarity"] = s.max_complementarity;
   j["max_friction_residual"] = s.max_friction_residual;
   j["sliding_reversals"] = s.sliding_reversals;
+  j["max_cone_violation"] = s.max_cone_violation;
+  j["max_stick_slip_residual"] = s.max_stick_slip_residual;
+  j["stick_slip_transitions"] = s.stick_slip_transitions;
+  j["stick_contact_steps"] = s.stick_contact_steps;
+  j["slip_contact_steps"] = s.slip_contact_steps;
   j["max_active_contacts"] = s.max_active;
   j["first_contact_step"] = s.first_contact_step;
   j["initial_energy"] = s.initial_energy;

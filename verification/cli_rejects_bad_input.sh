@@ -97,6 +97,7 @@ variant("damping-ratio", lambda d: d.update(damping={"modal_ratio": 1.0}))
 variant("damping-ratio-negative", lambda d: d.update(damping={"modal_ratio": -0.01}))
 variant("damping-unknown", lambda d: d.update(damping={"zeta": 0.01}))
 variant("damping-number", lambda d: d.update(damping=0.01))
+variant("friction-law", lambda d: d["operating_point"].update(friction_law="stick"))
 PY
 cp "$good" "$work/unreadable.json"
 chmod 000 "$work/unreadable.json"
@@ -183,6 +184,7 @@ expect 2 "damping.rayleigh.beta': must be a number in [0, inf) s, got \"small\""
 expect 2 "damping.rayleigh.beta': missing (required)" -- "$rsi" simulate "$work/damping-no-beta.json" --out "$work/out"
 expect 2 "damping.modal_ratio': must be in [0, 1), got 1.0" -- "$rsi" simulate "$work/damping-ratio.json" --method cb --modes 10 --out "$work/out"
 expect 2 "damping.modal_ratio': must be in [0, 1), got -0.01" -- "$rsi" simulate "$work/damping-ratio-negative.json" --out "$work/out"
+expect 2 "operating_point.friction_law': must be \"sliding_sign\" or \"coulomb\", got \"stick\"" -- "$rsi" simulate "$work/friction-law.json" --out "$work/out"
 expect 2 "damping.zeta': unknown key" -- "$rsi" simulate "$work/damping-unknown.json" --out "$work/out"
 expect 2 "key 'damping': must be a JSON object" -- "$rsi" simulate "$work/damping-number.json" --out "$work/out"
 

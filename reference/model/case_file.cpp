@@ -70,6 +70,15 @@ Case parse_case(const json& document, const std::string& source) {
   c.operating_point.rotation_speed = op.number("rotation_speed", {0.0, 1e5, false, false, "rad/s"});
   c.operating_point.friction_coefficient =
       op.number("friction_coefficient", {0.0, 2.0, false, false, ""});
+  op.claim("friction_law");
+  if (document.at("operating_point").contains("friction_law")) {
+    const json& law = document.at("operating_point").at("friction_law");
+    if (law == "coulomb")
+      c.operating_point.friction_law = FrictionLaw::coulomb;
+    else if (law != "sliding_sign")
+      op.fail("operating_point.friction_law",
+              "must be \"sliding_sign\" or \"coulomb\", got " + law.dump());
+  }
   op.finish();
 
   ObjectReader forcing = top.object("forcing");

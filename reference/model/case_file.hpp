@@ -54,9 +54,21 @@ struct CasingSpec {
   double clamp_angle = 0.0; ///< polar angle of the clamped node [rad]
 };
 
+/// How friction acts at a closed contact (SPEC §3, §8).
+enum class FrictionLaw {
+  /// The first version's law: always sliding, mu lambda along the sign of
+  /// the predicted sliding velocity (chatters near zero sliding speed).
+  sliding_sign,
+  /// Coulomb with stick and slip on the forward increment of the step.
+  coulomb
+};
+
 struct OperatingPoint {
   double rotation_speed = 0.0;       ///< Omega [rad/s], counter-clockwise
   double friction_coefficient = 0.0; ///< mu [-]
+  /// "friction_law": "sliding_sign" (absent: the first round's behaviour,
+  /// with which the stored thresholds were measured) or "coulomb".
+  FrictionLaw friction_law = FrictionLaw::sliding_sign;
 };
 
 /// Radial nodal forces amplitude * cos(nodal_diameter * theta_j) on every

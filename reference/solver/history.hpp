@@ -23,6 +23,14 @@ struct StepReport {
   double max_complementarity = 0.0;   ///< max |lambda_k g_k| [N m]
   double max_friction_residual = 0.0; ///< max | f_t + mu lambda sign(v_slide) | [N]
   int sliding_reversals = 0;          ///< active constraints whose sliding changed sign
+  // Coulomb stick/slip (friction_law "coulomb"): the certificate of the
+  // step's frictional contact problem (reference/contact/frictional_contact_problem,
+  // reduced/reduced_coulomb_certificate).
+  double max_cone_violation = 0.0;      ///< max(|lambda_t| - mu lambda_n, 0) [N]
+  double max_stick_slip_residual = 0.0; ///< stick: slip increment; slip: lambda_t against -mu lambda_n s^ (scaled, -)
+  int stick_slip_transitions = 0;       ///< contacts whose state (open, stick, slip) changed since the last step
+  int n_stick = 0;                      ///< contacts sticking after the step
+  int n_slip = 0;                       ///< contacts slipping after the step
 };
 
 /// One history row as the run produces it. The vectors are views of the
@@ -87,6 +95,11 @@ struct RunSummary {
   double max_complementarity = 0.0;   ///< max |lambda g| [N m]
   double max_friction_residual = 0.0; ///< [N]
   int sliding_reversals = 0;          ///< (step, contact) pairs where sliding changed sign
+  double max_cone_violation = 0.0;      ///< [N] (Coulomb law)
+  double max_stick_slip_residual = 0.0; ///< scaled, - (Coulomb law)
+  int stick_slip_transitions = 0;       ///< (step, contact) pairs whose state changed (Coulomb law)
+  long stick_contact_steps = 0;         ///< (step, contact) pairs in stick (Coulomb law)
+  long slip_contact_steps = 0;          ///< (step, contact) pairs in slip (Coulomb law)
   double initial_energy = 0.0;        ///< [J]
   double max_energy = 0.0;            ///< [J]
   double energy_balance_error = 0.0;  ///< max_n |E_n - E_0 - W_ext - W_contact + W_damp| [J]

@@ -70,6 +70,11 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
   s.max_complementarity = std::max(s.max_complementarity, r.max_complementarity);
   s.max_friction_residual = std::max(s.max_friction_residual, r.max_friction_residual);
   s.sliding_reversals += r.sliding_reversals;
+  s.max_cone_violation = std::max(s.max_cone_violation, r.max_cone_violation);
+  s.max_stick_slip_residual = std::max(s.max_stick_slip_residual, r.max_stick_slip_residual);
+  s.stick_slip_transitions += r.stick_slip_transitions;
+  s.stick_contact_steps += r.n_stick;
+  s.slip_contact_steps += r.n_slip;
   s.max_active = std::max(s.max_active, r.n_active);
   if (needs_casing(r)) {
     if (state.casing.size() != m_casing.n_dofs())
