@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 
 #include "bladed_disk.hpp"
+#include "case_json.hpp"
 #include "casing.hpp"
 #include "commands.hpp"
 #include "nodal_diameter.hpp"
@@ -20,12 +21,7 @@ ComponentInput load_component_input(const std::string& case_path, const std::str
   if (!in) throw CaseError(case_path + ": cannot open the case file (missing or unreadable)");
   std::ostringstream text;
   text << in.rdbuf();
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    throw CaseError(case_path + ": malformed JSON: " + e.what());
-  }
+  const nlohmann::json document = case_json::parse_document(text.str(), case_path);
   ComponentInput input;
   input.case_source = case_path;
   if (is_component_case(document)) {

@@ -98,6 +98,17 @@ variant("damping-ratio-negative", lambda d: d.update(damping={"modal_ratio": -0.
 variant("damping-unknown", lambda d: d.update(damping={"zeta": 0.01}))
 variant("damping-number", lambda d: d.update(damping=0.01))
 variant("friction-law", lambda d: d["operating_point"].update(friction_law="stick"))
+# Counts beyond what a run holds (issue 13, class 1): 1e13 steps; 1e9 steps
+# each written (about 1.2 TB of history).
+variant("too-many-steps", lambda d: d["time"].update(duration=1e4, step=1e-9))
+variant("huge-history", lambda d: d["time"].update(duration=1.0, step=1e-9, output_every=1))
+# JSON a parser accepts but no case means (issue 13, classes 5 and 7): a key
+# twice in one object (the last would win silently), nesting 100,000 deep.
+text = open(good).read()
+assert '"friction_coefficient": 0.15' in text
+open(f"{work}/duplicate-key.json", "w").write(
+    text.replace('"friction_coefficient": 0.15', '"friction_coefficient": 0.15, "friction_coefficient": 0.3'))
+open(f"{work}/deep.json", "w").write('{"a": ' + '[' * 100000 + ']' * 100000 + '}')
 PY
 cp "$good" "$work/unreadable.json"
 chmod 000 "$work/unreadable.json"
@@ -184,6 +195,13 @@ expect 2 "damping.rayleigh.beta': must be a number in [0, inf) s, got \"small\""
 expect 2 "damping.rayleigh.beta': missing (required)" -- "$rsi" simulate "$work/damping-no-beta.json" --out "$work/out"
 expect 2 "damping.modal_ratio': must be in [0, 1), got 1.0" -- "$rsi" simulate "$work/damping-ratio.json" --method cb --modes 10 --out "$work/out"
 expect 2 "damping.modal_ratio': must be in [0, 1), got -0.01" -- "$rsi" simulate "$work/damping-ratio-negative.json" --out "$work/out"
+expect 2 "time.duration': over time.step gives 1e+13 steps, more than the 2147483647 a run can count" -- "$rsi" simulate "$work/too-many-steps.json" --out "$work/out"
+expect 2 "time.duration': over time.step gives 1e+13 steps" -- "$rsi" campaign "$work/too-many-steps.json" --out "$work/out"
+expect 2 "time.output_every': with time.duration / time.step = 1e+09 steps, history.csv would take about 1176 GB (limit 100 GB)" -- "$rsi" simulate "$work/huge-history.json" --out "$work/out"
+for cmd in simulate modes; do
+  expect 2 "key 'friction_coefficient' appears twice in one object" -- "$rsi" "$cmd" "$work/duplicate-key.json" --out "$work/out"
+  expect 2 "JSON nested deeper than 32 levels" -- "$rsi" "$cmd" "$work/deep.json" --out "$work/out"
+done
 expect 2 "operating_point.friction_law': must be \"sliding_sign\" or \"coulomb\", got \"stick\"" -- "$rsi" simulate "$work/friction-law.json" --out "$work/out"
 expect 2 "damping.zeta': unknown key" -- "$rsi" simulate "$work/damping-unknown.json" --out "$work/out"
 expect 2 "key 'damping': must be a JSON object" -- "$rsi" simulate "$work/damping-number.json" --out "$work/out"

@@ -52,6 +52,31 @@ CasingSpec read_casing(ObjectReader r, double tip_radius) {
 
 } // namespace
 
+/// Counts derived from the time keys must fit what a run counts with (int
+/// steps) and what a disk holds: the history, one row of about
+/// 24 (1 + 2 n_blades + 4) bytes every output_every steps (%.17g numbers).
+void check_run_size(const Case& c, const case_json::ObjectReader& time) {
+  constexpr double max_steps = std::numeric_limits<int>::max();
+  const double steps = std::round(c.time.duration / c.time.step);
+  if (!(steps <= max_steps)) {
+    std::ostringstream what;
+    what << "over time.step gives " << steps << " steps, more than the "
+         << static_cast<long long>(max_steps)
+         << " a run can count: shorten time.duration or lengthen time.step";
+    time.fail(time.full("duration"), what.str());
+  }
+  constexpr double max_history_bytes = 100e9;
+  const double bytes =
+      (steps / c.time.output_every + 1) * 24.0 * (1 + 2 * c.bladed_disk.n_blades + 4);
+  if (bytes > max_history_bytes) {
+    std::ostringstream what;
+    what << "with time.duration / time.step = " << steps << " steps, history.csv would take about "
+         << bytes / 1e9 << " GB (limit " << max_history_bytes / 1e9
+         << " GB): raise time.output_every";
+    time.fail(time.full("output_every"), what.str());
+  }
+}
+
 Case parse_case(const json& document, const std::string& source) {
   ObjectReader top(document, "", source);
   Case c;
@@ -94,6 +119,7 @@ Case parse_case(const json& document, const std::string& source) {
       time.number("duration", {c.time.step, inf, false, true, "s (at least one step)"});
   c.time.output_every = time.integer("output_every", 1, 100000000);
   time.finish();
+  check_run_size(c, time);
 
   // Optional: "damping": {"rayleigh": {"alpha": .., "beta": ..}, "modal_ratio": ..}.
   top.claim("damping");
@@ -145,15 +171,7 @@ Case parse_case(const json& document, const std::string& source) {
 }
 
 Case parse_case_text(const std::string& text, const std::string& source) {
-  json document;
-  try {
-    document = json::parse(text);
-  } catch (const json::exception& e) {
-    // Not only parse_error: a number beyond the range of a double (1e999)
-    // raises out_of_range 406 (found by fuzz/fuzz_case_loader).
-    throw CaseError(source + ": malformed JSON: " + e.what());
-  }
-  return parse_case(document, source);
+  return parse_case(case_json::parse_document(text, source), source);
 }
 
 Case load_case(const std::string& path) {

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -124,5 +125,48 @@ private:
   const std::string& m_source;
   std::set<std::string> m_seen;
 };
+
+/// Deepest nesting of objects and arrays a case file may have (the schema
+/// needs 4); deeper documents are refused before anything recurses on them.
+inline constexpr int max_depth = 32;
+
+/// The JSON document of `text`, refusing what a parser would silently
+/// accept: a key repeated in one object (the last would win) and nesting
+/// deeper than max_depth. CaseError names `source`, the key or the depth.
+inline json parse_document(const std::string& text, const std::string& source) {
+  std::vector<std::set<std::string>> keys; // one set per open object
+  std::vector<bool> is_object;             // the open containers, innermost last
+  std::string path_error;
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event,
+                                            json& parsed) {
+    using Event = json::parse_event_t;
+    if (event == Event::object_start || event == Event::array_start) {
+      if (depth >= max_depth)
+        throw CaseError(source + ": JSON nested deeper than " + std::to_string(max_depth) +
+                        " levels: not a case file");
+      is_object.push_back(event == Event::object_start);
+      if (event == Event::object_start) keys.emplace_back();
+    } else if (event == Event::object_end || event == Event::array_end) {
+      if (!is_object.empty()) {
+        if (is_object.back()) keys.pop_back();
+        is_object.pop_back();
+      }
+    } else if (event == Event::key && !keys.empty()) {
+      const std::string key = parsed.get<std::string>();
+      if (!keys.back().insert(key).second)
+        throw CaseError(source + ": key '" + key +
+                        "' appears twice in one object (a JSON parser would keep the last "
+                        "silently): keep one");
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
+  } catch (const json::exception& e) {
+    // Not only parse_error: a number beyond the range of a double (1e999)
+    // raises out_of_range 406 (found by fuzz/fuzz_case_loader).
+    throw CaseError(source + ": malformed JSON: " + e.what());
+  }
+}
 
 } // namespace rsi::case_json
