@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <gsl/gsl_errno.h>
 
 #include "case_file.hpp"
 #include "central_difference.hpp"
@@ -128,6 +129,9 @@ void add_component_options(CLI::App& command, rsi::ComponentLoadOptions& load) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // GSL's default error handler aborts the process; rsi checks the status
+  // every GSL call returns and reports it (exit 2 or 3) instead.
+  gsl_set_error_handler_off();
   CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
   app.require_subcommand(0, 1);
 

@@ -100,6 +100,9 @@ variant("damping-number", lambda d: d.update(damping=0.01))
 variant("friction-law", lambda d: d["operating_point"].update(friction_law="stick"))
 # Counts beyond what a run holds (issue 13, class 1): 1e13 steps; 1e9 steps
 # each written (about 1.2 TB of history).
+# In range key by key, but the blade's length function overflows: GSL's
+# root finder met a non-finite value and its default handler aborted (issue 13, class 5).
+variant("gsl-overflow", lambda d: (d["bladed_disk"].update(tip_radius=1e300), d["casing"].update(radius=1.7e308)))
 variant("too-many-steps", lambda d: d["time"].update(duration=1e4, step=1e-9))
 variant("huge-history", lambda d: d["time"].update(duration=1.0, step=1e-9, output_every=1))
 # JSON a parser accepts but no case means (issue 13, classes 5 and 7): a key
@@ -198,6 +201,7 @@ expect 2 "damping.modal_ratio': must be in [0, 1), got -0.01" -- "$rsi" simulate
 expect 2 "time.duration': over time.step gives 1e+13 steps, more than the 2147483647 a run can count" -- "$rsi" simulate "$work/too-many-steps.json" --out "$work/out"
 expect 2 "time.duration': over time.step gives 1e+13 steps" -- "$rsi" campaign "$work/too-many-steps.json" --out "$work/out"
 expect 2 "time.output_every': with time.duration / time.step = 1e+09 steps, history.csv would take about 1176 GB (limit 100 GB)" -- "$rsi" simulate "$work/huge-history.json" --out "$work/out"
+expect 2 "bladed_disk: no blade element length puts the tip at tip_radius (GSL root finder" -- "$rsi" modes "$work/gsl-overflow.json" --out "$work/out"
 for cmd in simulate modes; do
   expect 2 "key 'friction_coefficient' appears twice in one object" -- "$rsi" "$cmd" "$work/duplicate-key.json" --out "$work/out"
   expect 2 "JSON nested deeper than 32 levels" -- "$rsi" "$cmd" "$work/deep.json" --out "$work/out"

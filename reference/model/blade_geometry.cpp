@@ -38,9 +38,20 @@ double solve_element_length(const BladedDiskSpec& spec) {
   gsl_function f{&tip_radius_error, &copy};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &f, low, high);
+  // GSL reports failure by status (the CLI turns GSL's aborting default
+  // handler off, cli/main.cpp); a failure here means the geometry is
+  // degenerate (a non-finite tip radius), which the case must not ask for.
+  auto fail = [&](int status) {
+    throw CaseError(std::string("bladed_disk: no blade element length puts the tip at "
+                                "tip_radius (GSL root finder: ") +
+                    gsl_strerror(status) +
+                    "); check tip_radius, rim_radius, n_blade_elements and kink_angle_deg");
+  };
+  if (const int status = gsl_root_fsolver_set(solver.get(), &f, low, high); status != GSL_SUCCESS)
+    fail(status);
   for (int iteration = 0; iteration < 200; ++iteration) {
-    gsl_root_fsolver_iterate(solver.get());
+    if (const int status = gsl_root_fsolver_iterate(solver.get()); status != GSL_SUCCESS)
+      fail(status);
     const double a = gsl_root_fsolver_x_lower(solver.get());
     const double b = gsl_root_fsolver_x_upper(solver.get());
     if (gsl_root_test_interval(a, b, 0.0, 1e-15) == GSL_SUCCESS) break;

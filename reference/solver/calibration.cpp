@@ -1,6 +1,7 @@
 #include "calibration.hpp"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include <gsl/gsl_errno.h>
@@ -43,9 +44,16 @@ double calibrate_blade_thickness(const Case& c, double target_hz, double low, do
   gsl_function f{&family_error, &problem};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
-  gsl_root_fsolver_set(solver.get(), &f, low, high);
+  // GSL reports failure by status (the CLI turns its aborting default
+  // handler off, cli/main.cpp): a non-finite frequency on the way.
+  auto check = [&](int status) {
+    if (status != GSL_SUCCESS)
+      throw std::runtime_error(std::string("calibrate_blade_thickness: GSL root finder: ") +
+                               gsl_strerror(status));
+  };
+  check(gsl_root_fsolver_set(solver.get(), &f, low, high));
   for (int iteration = 0; iteration < 100; ++iteration) {
-    gsl_root_fsolver_iterate(solver.get());
+    check(gsl_root_fsolver_iterate(solver.get()));
     if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()),
                                gsl_root_fsolver_x_upper(solver.get()), 1e-12, 0.0) == GSL_SUCCESS)
       break;
