@@ -185,9 +185,10 @@ int main(int argc, char** argv) {
   simulate_cmd->add_option("--method", simulate.method, "full (reference), cb, ccm or guyan")
       ->capture_default_str()
       ->check(one_of({"full", "cb", "ccm", "guyan"}));
-  simulate_cmd->add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
-      ->capture_default_str()
-      ->check(integer_in(0, 1000000000, modes_allowed));
+  CLI::Option* simulate_modes =
+      simulate_cmd->add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
+          ->capture_default_str()
+          ->check(integer_in(0, 1000000000, modes_allowed));
   simulate_cmd->add_flag(
       "--full-field", simulate.full_field,
       "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
@@ -282,7 +283,14 @@ int main(int argc, char** argv) {
       if (*modes_cmd) return rsi::run_modes(modes, directories);
       if (*export_cmd) return rsi::run_export(export_options, directories);
       if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
-      if (*simulate_cmd) return rsi::run_simulate(simulate, directories);
+      if (*simulate_cmd) {
+        // An option the method does not use is refused, not ignored (cb,
+        // ccm and guyan check theirs when the basis is built).
+        if (simulate_modes->count() > 0 && simulate.method == "full")
+          throw rsi::UsageError("--modes: only for a reduced method (the full reference keeps "
+                                "no modes); drop it");
+        return rsi::run_simulate(simulate, directories);
+      }
       if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
       if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
       if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, directories);

@@ -201,6 +201,8 @@ expect 2 "damping.modal_ratio': must be in [0, 1), got -0.01" -- "$rsi" simulate
 expect 2 "time.duration': over time.step gives 1e+13 steps, more than the 2147483647 a run can count" -- "$rsi" simulate "$work/too-many-steps.json" --out "$work/out"
 expect 2 "time.duration': over time.step gives 1e+13 steps" -- "$rsi" campaign "$work/too-many-steps.json" --out "$work/out"
 expect 2 "time.output_every': with time.duration / time.step = 1e+09 steps, history.csv would take about 1176 GB (limit 100 GB)" -- "$rsi" simulate "$work/huge-history.json" --out "$work/out"
+# Options the method does not use are refused, not ignored (issue 13, class 7).
+expect 2 "--modes: only for a reduced method (the full reference keeps no modes)" -- "$rsi" simulate "$good" --method full --modes 10 --out "$work/out"
 expect 2 "bladed_disk: no blade element length puts the tip at tip_radius (GSL root finder" -- "$rsi" modes "$work/gsl-overflow.json" --out "$work/out"
 for cmd in simulate modes; do
   expect 2 "key 'friction_coefficient' appears twice in one object" -- "$rsi" "$cmd" "$work/duplicate-key.json" --out "$work/out"
