@@ -307,13 +307,13 @@ int main(int argc, char** argv) {
     } catch (const rsi::StabilityError& e) {
       return failure("error", e, 2);
     } catch (const rsi::ReducedIntegrationError& e) {
-      return failure("numerical failure", e, 3);
+      return failure("error: numerical failure", e, 3);
     } catch (const rsi::IntegrationError& e) {
-      return failure("numerical failure", e, 3);
+      return failure("error: numerical failure", e, 3);
     } catch (const rsi::MassFactorError& e) {
-      return failure("numerical failure", e, 3);
+      return failure("error: numerical failure", e, 3);
     } catch (const rsi::ModalError& e) {
-      return failure("numerical failure", e, 3);
+      return failure("error: numerical failure", e, 3);
     } catch (const std::exception& e) {
       return failure("error", e, 1);
     }

@@ -120,7 +120,10 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
     std::printf(" [%.4f, %.4f] ms", 1e3 * a, 1e3 * b);
   std::printf("\nwrote %s/history.csv, %s/summary.json\n", options.out.c_str(),
               options.out.c_str());
-  return s.completed ? 0 : 3;
+  if (s.completed) return 0;
+  // Exit 3 always says why on stderr, not only in the summary lines above.
+  std::fprintf(stderr, "rsi: error: numerical failure: the run stopped: %s\n", s.status.c_str());
+  return 3;
 }
 
 } // namespace rsi

@@ -52,11 +52,14 @@ for method in "full" "cb --modes 10"; do
   no_temporary "$work/$name"
 done
 
-"$rsi" simulate "$work/sprag.json" --method full --out "$work/sprag" >"$work/log" 2>&1
+"$rsi" simulate "$work/sprag.json" --method full --out "$work/sprag" >"$work/log" 2>"$work/err"
 status=$?
 if [ "$status" -ne 3 ]; then
   fail "sprag case: exit $status, expected 3 (blow-up)"
-  cat "$work/log"
+  cat "$work/log" "$work/err"
+elif ! grep -q "^rsi: error: numerical failure: the run stopped: .*blow-up" "$work/err"; then
+  fail "sprag case: exit 3 without the 'rsi: error:' line on stderr saying why"
+  cat "$work/err"
 elif ! [ -s "$work/sprag/history.csv" ] || ! grep -q blow-up "$work/sprag/summary.json"; then
   fail "sprag case: history.csv or the blow-up status in summary.json missing"
 else
