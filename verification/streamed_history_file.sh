@@ -52,6 +52,23 @@ for method in "full" "cb --modes 10"; do
   no_temporary "$work/$name"
 done
 
+# A history row at every step (issue 13, class 2): the energy monitor
+# compared E_1 with the round-off external work of step 1 and ignored E_0,
+# so every such run "blew up" at step 1 when the forcing had nodal diameter
+# 0 or 3. These ordinary runs must complete.
+for nd in 0 3; do
+  /usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/every-$nd.json" \
+    time.duration=0.0002 time.output_every=1 forcing.nodal_diameter=$nd
+  for method in "full" "cb --modes 10"; do
+    # shellcheck disable=SC2086
+    if "$rsi" simulate "$work/every-$nd.json" --method $method --out "$work/every" >"$work/log" 2>&1; then
+      echo "ok   output_every 1, nodal diameter $nd, --method $method: completed"
+    else
+      fail "output_every 1, nodal diameter $nd, --method $method: $(tail -n 1 "$work/log")"
+    fi
+  done
+done
+
 "$rsi" simulate "$work/sprag.json" --method full --out "$work/sprag" >"$work/log" 2>"$work/err"
 status=$?
 if [ "$status" -ne 3 ]; then

@@ -120,10 +120,16 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
   if (!std::isfinite(e))
     return stop("blow-up: non-finite energy at step " + std::to_string(state.step) +
                 " (t = " + std::to_string(state.time) + " s)");
-  if (m_largest_external_work > 0.0 && e > m_options.blowup_factor * m_largest_external_work) {
+  // The energy a run may hold comes from E_0 and the external work (contact
+  // can feed some in, SPEC §3). At step 1 the external work is round-off
+  // (u_1 = u_-1 exactly from rest: W_ext = F^T (u_1 - u_-1) / 2 = 0), while
+  // E_0 = dt^2/8 F^T M^-1 F is not: leaving E_0 out called every run
+  // sampled at step 1 a blow-up (issue 13).
+  const double supplied = s.initial_energy + m_largest_external_work;
+  if (supplied > 0.0 && e > m_options.blowup_factor * supplied) {
     std::ostringstream message;
     message << "blow-up: energy " << e << " J exceeds " << m_options.blowup_factor
-            << " times the largest external work " << m_largest_external_work << " J at step "
+            << " times E_0 + the largest external work " << supplied << " J at step "
             << state.step << " (t = " << state.time << " s); contact work " << state.contact_work
             << " J";
     return stop(message.str());

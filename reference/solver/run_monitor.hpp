@@ -31,8 +31,8 @@ public:
 
 struct RunOptions {
   bool force = false; ///< integrate even above the stability limit
-  /// Stop as a blow-up when the energy exceeds this multiple of the largest
-  /// external work done so far (contact can feed energy in, SPEC §3, but a
+  /// Stop as a blow-up when the energy exceeds this multiple of E_0 plus the
+  /// largest external work done so far (contact can feed energy in, SPEC §3, but a
   /// hundredfold gain is the sprag instability, not a physical response).
   double blowup_factor = 100.0;
   /// Called now and then with the fraction done (for progress display).
