@@ -15,6 +15,7 @@
 #include "craig_bampton.hpp"
 #include "craig_chang_martinez.hpp"
 #include "guyan.hpp"
+#include "modal_analysis.hpp"
 #include "reduction.hpp"
 
 namespace rsi {
@@ -95,6 +96,34 @@ TEST(SingularModels, ClampedHubIsAccepted) {
     EXPECT_EQ(refusal([&] { reduce_bladed_disk(bd, method, modes); }), "") << method;
   }
   EXPECT_EQ(refusal([&] { reduce_bladed_disk(bd, "ccm", 300); }), "") << "ccm dense path";
+}
+
+/// The ModalError message of lowest_modes (empty if it throws none).
+std::string modal_refusal(const BladedDisk& bd, int count) {
+  try {
+    lowest_modes(bd.stiffness, bd.mass, count, ModalSolver::sparse);
+  } catch (const ModalError& e) {
+    std::printf("  refused: %s\n", e.what());
+    return e.what();
+  }
+  return {};
+}
+
+TEST(SingularModels, SparseModalPathNamesTheRigidMotion) {
+  // The free hub's rigid rotation is a null vector of K: the lowest mode's
+  // K phi is at the rounding level of the product (modal_analysis.cpp).
+  const std::string message = modal_refusal(free_hub_disk(), 5);
+  EXPECT_TRUE(contains(message, "singular")) << message;
+}
+
+TEST(SingularModels, RefinedBladesAreNotCalledSingular) {
+  // 500 elements a blade (in range: n_blade_elements <= 1000): 33,088 dofs,
+  // lowest eigenvalue 390 rad^2/s^2 (a 3.1 Hz bending family), which the
+  // old test lambda_min < n eps lambda_max (3900) called singular (issue 13).
+  Case c = default_case();
+  c.bladed_disk.n_blade_elements = 500;
+  const BladedDisk bd = assemble_bladed_disk(c);
+  EXPECT_EQ(modal_refusal(bd, 5), "");
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -172,18 +173,6 @@ void lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& mass, int
   }
 }
 
-/// max_i K_ii / M_ii over the dofs with mass: the Rayleigh quotients of the
-/// unit vectors, a lower bound of lambda_max when M is positive definite.
-double largest_diagonal_ratio(const Eigen::SparseMatrix<double>& stiffness,
-                              const Eigen::SparseMatrix<double>& mass) {
-  const Eigen::VectorXd k = stiffness.diagonal();
-  const Eigen::VectorXd m = mass.diagonal();
-  double largest = 0.0;
-  for (Eigen::Index i = 0; i < k.size(); ++i)
-    if (m(i) > 0.0) largest = std::max(largest, k(i) / m(i));
-  return largest;
-}
-
 /// `factorized`: a factor of K at shift 0 the caller made, or null.
 Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
                    const Eigen::SparseMatrix<double>& mass, int count,
@@ -209,17 +198,35 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
   std::string why;
   const double largest = sparse_largest_eigenvalue(stiffness, mass, why);
   modes.omega_max = std::sqrt(std::max(largest, 0.0));
-  // A singular K that CHOLMOD factorizes anyway (pivots at round-off) leaves
-  // eigenvalues at the round-off level n eps lambda_max, where shift-invert
-  // about 0 is meaningless. With a singular M (lambda_max infinite) the
-  // scale is max K_ii / M_ii instead.
-  const double scale = std::isfinite(largest) ? largest : largest_diagonal_ratio(stiffness, mass);
-  if (modes.omega_squared(0) < n * std::numeric_limits<double>::epsilon() * scale)
-    throw ModalError("modal analysis: the stiffness matrix is singular to working precision "
-                     "(lowest eigenvalue " +
-                     std::to_string(modes.omega_squared(0)) + " rad^2/s^2 against " +
-                     std::to_string(scale) +
-                     " for the largest): the part is not supported against a rigid motion");
+  // A singular K that the factorization takes anyway (pivots at round-off)
+  // returns its null vector as the lowest mode. Such a phi is a rigid
+  // motion: K phi is zero but for the rounding of the product itself,
+  // |fl(K phi) - K phi| <= gamma_p |K| |phi| (rows of p terms; Higham,
+  // Accuracy and Stability, eq. 3.5), whereas an elastic mode's K phi =
+  // lambda M phi stands clear of it. Comparing lambda with n eps lambda_max
+  // instead called refined models singular (issue 13: 500 blade elements,
+  // lambda_min 390 against n eps lambda_max 3900, a 3 Hz bending mode).
+  // Four times gamma_p leaves room for the eigenvector's own error, which
+  // shift-invert about 0 makes far smaller for a null vector.
+  const Eigen::VectorXd phi = modes.shapes.col(0);
+  const double residual = (stiffness * phi).cwiseAbs().maxCoeff();
+  const double rounding = (stiffness.cwiseAbs() * phi.cwiseAbs()).maxCoeff();
+  Eigen::Index row_terms = 0;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = stiffness;
+  for (Eigen::Index i = 0; i < rows.rows(); ++i)
+    row_terms = std::max<Eigen::Index>(row_terms, rows.outerIndexPtr()[i + 1] - rows.outerIndexPtr()[i]);
+  const double pe = static_cast<double>(row_terms) * std::numeric_limits<double>::epsilon();
+  const double gamma = pe / (1.0 - pe);
+  if (!(residual > 4.0 * gamma * rounding)) {
+    std::ostringstream message;
+    message << "modal analysis: the stiffness matrix is singular to working precision (the "
+               "lowest mode, eigenvalue "
+            << modes.omega_squared(0) << " rad^2/s^2, has |K phi| = " << residual
+            << ", within the rounding of the product, 4 gamma_p | |K| |phi| | = "
+            << 4.0 * gamma * rounding
+            << "): the part is not supported against a rigid motion";
+    throw ModalError(message.str());
+  }
   return modes;
 }
 
