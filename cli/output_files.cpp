@@ -7,7 +7,6 @@
 #include <unistd.h>
 #include <vector>
 
-#include <unsupported/Eigen/SparseExtra>
 
 namespace rsi {
 namespace {
@@ -109,26 +108,45 @@ void StreamedTextFile::commit() {
 
 namespace {
 
+/// The bytes Eigen::saveMarket writes (its header, then "row col value" a
+/// line, column by column, values as std::scientific with 17 digits), but
+/// through StreamedTextFile: saveMarket never checks its stream, so a full
+/// disk or the file-size limit left a truncated file renamed into place
+/// with success (issue 13). Every write and the close are checked here.
 void write_matrix_market(const std::string& path, const Eigen::SparseMatrix<double>& matrix,
-                         int symmetry) {
-  const std::string temporary = temporary_name(path);
-  if (!Eigen::saveMarket(matrix, temporary, symmetry)) {
-    std::filesystem::remove(temporary);
-    throw OutputError(path + ": cannot write");
-  }
-  commit(temporary, path);
+                         bool symmetric) {
+  StreamedTextFile file(path);
+  std::string text = symmetric ? "%%MatrixMarket matrix coordinate  real symmetric\n"
+                               : "%%MatrixMarket matrix coordinate  real general\n";
+  text += std::to_string(matrix.rows()) + " " + std::to_string(matrix.cols()) + " " +
+          std::to_string(matrix.nonZeros()) + "\n";
+  constexpr std::size_t chunk = 1 << 20;
+  char line[96];
+  for (Eigen::Index j = 0; j < matrix.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, j); it; ++it) {
+      const int length = std::snprintf(line, sizeof line, "%lld %lld %.17e\n",
+                                       static_cast<long long>(it.row() + 1),
+                                       static_cast<long long>(it.col() + 1), it.value());
+      text.append(line, static_cast<std::size_t>(length));
+      if (text.size() >= chunk) {
+        file.append(text);
+        text.clear();
+      }
+    }
+  file.append(text);
+  file.commit();
 }
 
 } // namespace
 
 void write_symmetric_matrix_market(const std::string& path,
                                    const Eigen::SparseMatrix<double>& matrix) {
-  write_matrix_market(path, matrix.triangularView<Eigen::Lower>(), Eigen::Symmetric);
+  write_matrix_market(path, matrix.triangularView<Eigen::Lower>(), true);
 }
 
 void write_general_matrix_market(const std::string& path,
                                  const Eigen::SparseMatrix<double>& matrix) {
-  write_matrix_market(path, matrix, 0);
+  write_matrix_market(path, matrix, false);
 }
 
 } // namespace rsi
