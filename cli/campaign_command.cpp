@@ -19,6 +19,7 @@
 #include "report_script.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
+#include "interruption.hpp"
 #include "run_outputs.hpp"
 
 namespace rsi {
@@ -78,12 +79,15 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     runs[i + 1].run = c.campaign[i];
   std::atomic<size_t> next{0};
   std::mutex print;
+  ReducedRunOptions run_options;
+  run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign, writing nothing
   auto worker = [&]() {
-    for (size_t i = next++; i < runs.size(); i = next++) {
+    for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {
       CampaignResult& r = runs[i];
       try {
-        r.result = r.run.method == "full" ? run_reference(c, {})
-                                          : run_reduced(c, r.run.method, r.run.modes, {}).run;
+        r.result = r.run.method == "full"
+                       ? run_reference(c, run_options.run)
+                       : run_reduced(c, r.run.method, r.run.modes, run_options).run;
         if (!r.result.summary.completed) r.error = r.result.summary.status;
       } catch (const std::exception& e) {
         r.error = e.what();
@@ -100,6 +104,7 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     threads.emplace_back(worker);
   for (std::thread& t : threads)
     t.join();
+  throw_if_interrupted();
   if (!runs[0].error.empty())
     throw IntegrationError("campaign: the reference run failed: " + runs[0].error);
 

@@ -17,6 +17,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "case_file.hpp"
+#include "interruption.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "component.hpp"
@@ -132,6 +133,7 @@ int main(int argc, char** argv) {
   // GSL's default error handler aborts the process; rsi checks the status
   // every GSL call returns and reports it (exit 2 or 3) instead.
   gsl_set_error_handler_off();
+  rsi::install_interruption_handlers();
   CLI::App app{"rsi: component mode synthesis for blade-tip/casing contact (Batailly et al. 2007)"};
   app.require_subcommand(0, 1);
 
@@ -294,6 +296,8 @@ int main(int argc, char** argv) {
       if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
       if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
       if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, directories);
+    } catch (const rsi::Interrupted& e) {
+      return failure("error", e, e.exit_status());
     } catch (const rsi::CaseError& e) {
       return failure("error", e, 2);
     } catch (const rsi::ImportError& e) {

@@ -1,6 +1,8 @@
 #include "report_script.hpp"
+#include "interruption.hpp"
 
 #include <cerrno>
+#include <csignal>
 #include <vector>
 
 #include <spawn.h>
@@ -20,9 +22,16 @@ int run_report_script(const std::string& script, const std::string& dir) {
   if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
   int status = 0;
   pid_t waited = 0;
-  do
+  do {
     waited = waitpid(pid, &status, 0);
-  while (waited < 0 && errno == EINTR);
+    if (waited < 0 && errno == EINTR && pending_signal() != 0) {
+      // Interrupted: the script must not go on writing after rsi has exited.
+      kill(pid, SIGTERM);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      throw_if_interrupted();
+    }
+  } while (waited < 0 && errno == EINTR);
   if (waited != pid) return 127;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
@@ -60,6 +61,7 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   ReducedRunOptions run;
   run.run.force = options.force;
   run.run.progress = terminal_progress();
+  run.run.checkpoint = throw_if_interrupted;
   run.full_field = options.full_field;
 
   // Streamed output: the history rows (and field rows) are formatted and

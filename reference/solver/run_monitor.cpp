@@ -105,8 +105,10 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
             << " m (1000 clearances) at step " << state.step << " (t = " << state.time << " s)";
     return stop(message.str());
   }
-  if (m_options.progress && state.step % 1000 == 0)
-    m_options.progress(double(state.step) / s.steps_requested);
+  if (state.step % 1000 == 0) {
+    if (m_options.progress) m_options.progress(double(state.step) / s.steps_requested);
+    if (m_options.checkpoint) m_options.checkpoint();
+  }
   if (state.step % m_output_every != 0 && state.step != s.steps_requested) return true;
 
   const double e = energy();

@@ -37,6 +37,9 @@ struct RunOptions {
   double blowup_factor = 100.0;
   /// Called now and then with the fraction done (for progress display).
   std::function<void(double)> progress;
+  /// Called every 1000 steps; may throw to abandon the run (the CLI throws
+  /// on SIGINT or SIGTERM, cli/interruption), which then writes nothing.
+  std::function<void()> checkpoint;
   /// When set, every history row is handed to it as it is produced and
   /// RunResult::history stays empty (streamed output: the run's memory does
   /// not grow with its length); when empty, the rows are kept in
