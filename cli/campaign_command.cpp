@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <filesystem>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -15,11 +17,11 @@
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
+#include "interruption.hpp"
 #include "output_files.hpp"
 #include "report_script.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
-#include "interruption.hpp"
 #include "run_outputs.hpp"
 
 namespace rsi {
@@ -27,7 +29,9 @@ namespace {
 
 struct CampaignResult {
   CampaignRun run;
-  RunResult result;
+  RunResult result; ///< its history streamed to `history`, not kept
+  std::unique_ptr<StreamedTextFile> history; ///< runs/<name>/history.csv, committed at the end
+  std::vector<double> blade1_gap;            ///< for the error norms
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
 };
 
@@ -79,11 +83,29 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     runs[i + 1].run = c.campaign[i];
   std::atomic<size_t> next{0};
   std::mutex print;
-  ReducedRunOptions run_options;
-  run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign, writing nothing
+  // Each history is streamed to its file as it is produced (a temporary
+  // file, committed only when every run is done: a failed campaign writes
+  // none), keeping only the blade-1 gap in memory: a campaign's memory no
+  // longer grows with the histories (issue 13: hundreds of MB at
+  // output_every 1).
+  for (CampaignResult& r : runs) {
+    const std::string dir = options.out + "/runs/" + run_name(r.run);
+    directories.make(dir, "--out");
+    r.history = std::make_unique<StreamedTextFile>(dir + "/history.csv");
+    r.history->append(history_csv_header(c.bladed_disk.n_blades));
+  }
   auto worker = [&]() {
     for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {
       CampaignResult& r = runs[i];
+      ReducedRunOptions run_options;
+      run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign
+      std::string row;
+      run_options.run.history_sink = [&](const HistoryRow& h) {
+        row.clear();
+        append_history_csv_row(row, h);
+        r.history->append(row);
+        r.blade1_gap.push_back(h.gap(0));
+      };
       try {
         r.result = r.run.method == "full"
                        ? run_reference(c, run_options.run)
@@ -119,11 +141,13 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     if (!r.error.empty()) {
       std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", run_name(r.run).c_str(),
                    r.error.c_str());
+      runs[i].history.reset(); // its temporary history removed: the run wrote nothing
+      std::error_code ignored;
+      std::filesystem::remove(dir, ignored); // empty
       continue;
     }
-    errors[i] = blade1_gap_errors(r.result.history, reference.history);
-    directories.make(dir, "--out");
-    write_text_file(dir + "/history.csv", history_csv(r.result.history));
+    errors[i] = gap_errors(r.blade1_gap, runs[0].blade1_gap);
+    r.history->commit();
     write_text_file(dir + "/summary.json", summary_json(r.result.summary));
     csv << r.run.method << "," << r.run.modes << "," << errors[i].e2 << "," << errors[i].e_inf
         << "," << r.result.summary.wall_seconds << ","

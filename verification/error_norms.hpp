@@ -4,7 +4,11 @@
 //   e_inf = max | g_red - g_ref | / max | g_ref |
 // over the history rows (the same sampling in both runs).
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "history.hpp"
 
@@ -15,21 +19,37 @@ struct GapErrors {
   double e_inf = 0.0;
 };
 
-/// Throws std::invalid_argument if the two histories have different rows.
-inline GapErrors blade1_gap_errors(const History& reduced, const History& reference) {
-  if (reduced.n_rows() != reference.n_rows())
+/// e2 and e_inf of the blade-1 gap series `reduced` against `reference`
+/// (one entry per history row). Throws std::invalid_argument if their
+/// lengths differ.
+inline GapErrors gap_errors(const std::vector<double>& reduced,
+                            const std::vector<double>& reference) {
+  if (reduced.size() != reference.size())
     throw std::invalid_argument("blade1_gap_errors: the histories have " +
-                                std::to_string(reduced.n_rows()) + " and " +
-                                std::to_string(reference.n_rows()) + " rows");
+                                std::to_string(reduced.size()) + " and " +
+                                std::to_string(reference.size()) + " rows");
   double diff2 = 0.0, ref2 = 0.0, diff_max = 0.0, ref_max = 0.0;
-  for (int i = 0; i < reference.n_rows(); ++i) {
-    const double d = reduced.gap[i](0) - reference.gap[i](0);
+  for (size_t i = 0; i < reference.size(); ++i) {
+    const double d = reduced[i] - reference[i];
     diff2 += d * d;
-    ref2 += reference.gap[i](0) * reference.gap[i](0);
+    ref2 += reference[i] * reference[i];
     diff_max = std::max(diff_max, std::abs(d));
-    ref_max = std::max(ref_max, std::abs(reference.gap[i](0)));
+    ref_max = std::max(ref_max, std::abs(reference[i]));
   }
   return {std::sqrt(diff2 / ref2), diff_max / ref_max};
+}
+
+/// The blade-1 gap of every row of a history.
+inline std::vector<double> blade1_gap(const History& h) {
+  std::vector<double> gap;
+  for (const Eigen::VectorXd& g : h.gap)
+    gap.push_back(g(0));
+  return gap;
+}
+
+/// Throws std::invalid_argument if the two histories have different rows.
+inline GapErrors blade1_gap_errors(const History& reduced, const History& reference) {
+  return gap_errors(blade1_gap(reduced), blade1_gap(reference));
 }
 
 } // namespace rsi
