@@ -8,7 +8,8 @@
 // in casing element e at local coordinate xi with Hermite values N(xi):
 //   gap       g_k = R_c + N . (u, u_s)_e - R_t - u_k
 //   sliding   v_slide = Omega (R_t + u_k) + v_k' - N . (v, v_s)_e'
-//   slip      s_k = Omega (R_t + u_k) dt + (v_k - v_k,before) - N . ((v, v_s)_e - (v, v_s)_e,before)
+//   slip      s_k = Omega (R_t + u_k) dt + (v_k - v_k,b) - N . ((v, v_s)_e - (v, v_s)_e,b)
+//             (subscript b: the state `before`)
 // The normal row G_k is -e(u_k) on q and +N on the casing (u, u_s)_e; the
 // force row D_k adds mu s_k times (-e(v_k) on q, +N on the casing (v, v_s)_e).
 //

@@ -342,7 +342,8 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
       const double ln = m_rows_lambda(2 * a);
       const double lt = m_rows_lambda(2 * a + 1);
       const double slip = m_rows_y(2 * a + 1);
-      const double sigma = std::abs(m_rows(2 * a + 1)) + m_w.row(2 * a + 1).cwiseAbs().sum() * largest;
+      const double sigma =
+          std::abs(m_rows(2 * a + 1)) + m_w.row(2 * a + 1).cwiseAbs().sum() * largest;
       if (states[a] == ReducedContactState::stick) {
         if (sigma > 0.0) scaled = std::max(scaled, std::abs(slip) / sigma);
       } else if (states[a] == ReducedContactState::slip) {

@@ -221,9 +221,9 @@ private:
   // Coulomb law: states, certificate and work storage.
   std::vector<ReducedContactState> m_state, m_state_before;
   ReducedCoulombCertificate m_certificate;
-  Eigen::VectorXd m_warm;  ///< (lambda_n, lambda_t) per tip, the next solve's start
-  Eigen::MatrixXd m_w;     ///< W over the solved tips, 2 m square
-  Eigen::VectorXd m_rows;  ///< [g~; s~] over the solved tips
+  Eigen::VectorXd m_warm; ///< (lambda_n, lambda_t) per tip, the next solve's start
+  Eigen::MatrixXd m_w;    ///< W over the solved tips, 2 m square
+  Eigen::VectorXd m_rows; ///< [g~; s~] over the solved tips
   Eigen::VectorXd m_rows_lambda, m_rows_y;
   std::vector<TipContact> m_tips;      ///< tips at the current state
   std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step

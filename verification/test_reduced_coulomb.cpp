@@ -141,11 +141,12 @@ TEST(ReducedCoulomb, CraigBamptonWithAllModesIsTheFullRunThroughTheCli) {
   };
   ASSERT_EQ(simulate("--method full", "full"), 0);
   const nlohmann::json full = read_json(work + "/full/summary.json");
-  const long full_closed = full.at("stick_contact_steps").get<long>() +
-                           full.at("slip_contact_steps").get<long>();
-  std::printf("full run: %d contacts at most, stick + slip contact-steps %ld, sliding reversals %d\n",
-              full.at("max_active_contacts").get<int>(), full_closed,
-              full.at("sliding_reversals").get<int>());
+  const long full_closed =
+      full.at("stick_contact_steps").get<long>() + full.at("slip_contact_steps").get<long>();
+  std::printf(
+      "full run: %d contacts at most, stick + slip contact-steps %ld, sliding reversals %d\n",
+      full.at("max_active_contacts").get<int>(), full_closed,
+      full.at("sliding_reversals").get<int>());
   if (full.at("max_active_contacts").get<int>() > 0 && full_closed == 0) {
     std::system(("rm -rf " + work).c_str());
     GTEST_SKIP() << "the reference integrator ignores friction_law \"coulomb\" on this branch "
@@ -210,8 +211,9 @@ Counts run_counts(Case c, int divide, FrictionLaw law) {
   c.operating_point.friction_law = law;
   const RunSummary s = run_reduced(c, "cb", 10, {}).run.summary;
   EXPECT_TRUE(s.completed) << s.status;
-  return {s.stick_slip_transitions, s.sliding_reversals, s.max_cone_violation,
-          s.max_stick_slip_residual, s.max_lambda, s.stick_contact_steps, s.slip_contact_steps};
+  return {s.stick_slip_transitions,  s.sliding_reversals, s.max_cone_violation,
+          s.max_stick_slip_residual, s.max_lambda,        s.stick_contact_steps,
+          s.slip_contact_steps};
 }
 
 TEST(ReducedCoulomb, StickSlipTransitionsConvergeAsTheStepHalvesAtRest) {
@@ -272,6 +274,31 @@ TEST(ReducedCoulomb, CertificateAtRoundOffOnTheRubbingRun) {
   EXPECT_LE(s.max_penetration, 1e-8);
   EXPECT_GE(s.min_lambda, 0.0);
   EXPECT_LE(s.energy_balance_error, 1e-8 * s.energy_scale);
+}
+
+TEST(ReducedCoulomb, DampedRubbingRunKeepsItsBalanceAndCertificate) {
+  // Damping enters W and the correction through A^-1 = (M + dt/2 C)^-1
+  // (reduced_integrator.hpp): E = E_0 + W_ext + W_contact - W_damp closes to
+  // round-off, the certificate as undamped.
+  Case c = coulomb_case(310.0, 0.02);
+  c.damping.modal_ratio = 0.005;   // 0.5 % on the kept modes (the Rotor 37 value)
+  c.damping.rayleigh.alpha = 10.0; // casing [1/s]
+  c.damping.rayleigh.beta = 1e-7;  // casing [s]
+  const RunSummary s = run_reduced(c, "cb", 10, {}).run.summary;
+  const double mu = c.operating_point.friction_coefficient;
+  std::printf("damped Coulomb, Omega = 310 rad/s, CB-10, 0-20 ms: W_damp %.4e J, energy balance "
+              "%.3e of %.3e J, cone %.3e N, scaled residual %.3e, slip %ld contact-steps\n",
+              s.final_damping_work, s.energy_balance_error, s.energy_scale, s.max_cone_violation,
+              s.max_stick_slip_residual, s.slip_contact_steps);
+  ASSERT_TRUE(s.completed) << s.status;
+  EXPECT_GT(s.final_damping_work, 0.0);
+  EXPECT_GT(s.slip_contact_steps, 0);
+  // V5 bound of the reduced runs (test_reduced_runs, ContactLawsAndEnergy).
+  EXPECT_LE(s.energy_balance_error, 1e-8 * s.energy_scale);
+  EXPECT_LE(s.max_penetration, 1e-8);
+  // As in CertificateAtRoundOffOnTheRubbingRun.
+  EXPECT_LE(s.max_cone_violation, 2.0 * eps * mu * s.max_lambda);
+  EXPECT_LE(s.max_stick_slip_residual, 1e-14 + 44.0 * eps);
 }
 
 TEST(ReducedCoulomb, TangentialMultipliersOfTheRubbingRun) {
@@ -341,9 +368,8 @@ TEST(ReducedCoulomb, WithoutFrictionIsTheSlidingSignRunToRoundOff) {
   const double d = max_gap_difference(coulomb.run.history, sign.run.history);
   double dl = 0.0, scale = 0.0;
   for (int i = 0; i < sign.run.history.n_rows(); ++i) {
-    dl = std::max(dl, (coulomb.run.history.lambda[i] - sign.run.history.lambda[i])
-                          .cwiseAbs()
-                          .maxCoeff());
+    dl = std::max(
+        dl, (coulomb.run.history.lambda[i] - sign.run.history.lambda[i]).cwiseAbs().maxCoeff());
     scale = std::max(scale, sign.run.history.lambda[i].cwiseAbs().maxCoeff());
   }
   std::printf("mu = 0, Omega = 310, CB-10, 0-20 ms: Coulomb against sliding_sign: gaps %.3e, "
@@ -351,7 +377,7 @@ TEST(ReducedCoulomb, WithoutFrictionIsTheSlidingSignRunToRoundOff) {
               d, dl / scale, coulomb.run.summary.slip_contact_steps,
               coulomb.run.summary.stick_contact_steps);
   ASSERT_TRUE(coulomb.run.summary.completed);
-  EXPECT_GT(coulomb.run.summary.slip_contact_steps, 0); // contacts closed: not vacuous
+  EXPECT_GT(coulomb.run.summary.slip_contact_steps, 0);  // contacts closed: not vacuous
   EXPECT_EQ(coulomb.run.summary.stick_contact_steps, 0); // mu = 0 cannot stick
   EXPECT_LE(d, 1e-9);
 }
