@@ -279,6 +279,9 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
   m_lambda_t.setZero(nt);
   m_certificate = ReducedCoulombCertificate{};
   m_active.assign(nt, 0);
+  m_set.clear();
+  m_w.resize(0, 0);
+  m_rows.resize(0);
   int n_active = 0;
   for (int k = 0; k < nt; ++k) {
     if (!std::isfinite(tips[k].gap) || !std::isfinite(tips[k].slip))
@@ -325,6 +328,7 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
             "reduced integrator: the set of closing tips did not settle at step " +
             std::to_string(m_n + 1));
     }
+    m_predicted_kept = tips;
     const std::vector<ReducedContactState>& states = m_coulomb.states();
     const int m = static_cast<int>(m_set.size());
     for (int a = 0; a < m; ++a) {

@@ -146,6 +146,14 @@ public:
   /// it was solved on (all zero when no tip closed).
   const ReducedCoulombCertificate& last_certificate() const { return m_certificate; }
   FrictionLaw friction_law() const { return m_law; }
+  /// Coulomb law, the last step's problem (empty when no tip closed): the
+  /// tips it was solved on, in order; W over them (rows and columns (n, t)
+  /// per tip) [m/N]; the predicted [g~; s~] [m]; and every tip's geometry at
+  /// the predicted state (the rows B: q_u, q_v, c_u, c_v, shape). For tests.
+  const std::vector<int>& coulomb_tips() const { return m_set; }
+  const Eigen::MatrixXd& coulomb_w() const { return m_w; }
+  const Eigen::VectorXd& coulomb_predicted() const { return m_rows; }
+  const std::vector<TipContact>& predicted_tips() const { return m_predicted_kept; }
   double energy() const;
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
@@ -225,6 +233,7 @@ private:
   Eigen::MatrixXd m_w;    ///< W over the solved tips, 2 m square
   Eigen::VectorXd m_rows; ///< [g~; s~] over the solved tips
   Eigen::VectorXd m_rows_lambda, m_rows_y;
+  std::vector<TipContact> m_predicted_kept; ///< Coulomb: the predicted tips of a closing step
   std::vector<TipContact> m_tips;      ///< tips at the current state
   std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step
   // Work storage of solve_contact, kept between steps.

@@ -20,12 +20,15 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "casing_forcing.hpp"
+#include "modal_damping.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_integrator.hpp"
 #include "reduced_run.hpp"
@@ -313,6 +316,132 @@ TEST(ReducedCoulomb, DampedRubbingRunKeepsItsBalanceAndCertificate) {
   // As in CertificateAtRoundOffOnTheRubbingRun.
   EXPECT_LE(s.max_cone_violation, 2.0 * eps * mu * s.max_lambda);
   EXPECT_LE(s.max_stick_slip_residual, 1e-14 + 44.0 * eps);
+}
+
+TEST(ReducedCoulomb, EachClosingStepAgainstADenseDerivation) {
+  // Omega = 0 (tips stick and slip), damped (W and the correction must use
+  // A = M + dt/2 C, not M), CB-10: on every step that closes a tip, the
+  // integrator's W, predicted [g~; s~] and correction are derived again
+  // here, densely, from the model: x~ by the damped central-difference
+  // predictor, B from the predicted tips' rows (B_n = -e(u) on q, +N on
+  // the casing u; B_t = +e(v) on q, -N on the casing v), W = dt^2 B A^-1 B^T,
+  // x_{n+1} - x~ = dt^2 A^-1 B^T lambda.
+  Case c = coulomb_case(0.0, 0.01);
+  c.damping.modal_ratio = 0.005;
+  c.damping.rayleigh.alpha = 10.0;
+  c.damping.rayleigh.beta = 1e-7;
+  const double dt = c.time.step;
+  const BladedDisk bd = assemble_bladed_disk(c);
+  const ReducedBasis basis = reduce_bladed_disk(bd, "cb", 10);
+  const Casing casing = assemble_casing(c);
+  const ReducedTipContact contact(bd, basis, casing, c);
+  ReducedDamping damping;
+  damping.bladed_disk = modal_damping(basis, c.damping.modal_ratio);
+  damping.casing = c.damping.rayleigh;
+  ReducedIntegrator integrator(basis, casing, dt, contact, damping);
+
+  const Eigen::MatrixXd kq = basis.stiffness;
+  const Eigen::MatrixXd cq = damping.bladed_disk.asDiagonal();
+  const Eigen::MatrixXd aq = basis.mass + 0.5 * dt * cq;
+  const Eigen::MatrixXd kc = Eigen::MatrixXd(casing.stiffness);
+  const Eigen::MatrixXd cc =
+      c.damping.rayleigh.alpha * Eigen::MatrixXd(casing.mass) + c.damping.rayleigh.beta * kc;
+  const Eigen::MatrixXd ac = Eigen::MatrixXd(casing.mass) + 0.5 * dt * cc;
+  const Eigen::LLT<Eigen::MatrixXd> aq_llt(aq), ac_llt(ac);
+  ASSERT_EQ(aq_llt.info(), Eigen::Success);
+  ASSERT_EQ(ac_llt.info(), Eigen::Success);
+  auto condition = [](const Eigen::MatrixXd& a) {
+    const Eigen::VectorXd e = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(a).eigenvalues();
+    return e.maxCoeff() / e.minCoeff();
+  };
+  const int r = static_cast<int>(kq.rows()), nc = static_cast<int>(kc.rows());
+  const double cond_q = condition(aq), cond_c = condition(ac);
+
+  const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(nc);
+  integrator.start(forcing);
+  Eigen::VectorXd q_prev = integrator.q(), c_prev = Eigen::VectorXd::Zero(nc);
+  // c_{-1} of start: dt^2/2 M_c^-1 F (damped: with M_c itself).
+  c_prev = 0.5 * dt * dt * Eigen::MatrixXd(casing.mass).llt().solve(forcing);
+  double worst_w = 0.0, worst_rows = 0.0, worst_x = 0.0, max_x = 0.0;
+  int checked = 0, sticking = 0;
+  const int steps = static_cast<int>(std::lround(c.time.duration / dt));
+  std::vector<TipContact> tips_here;
+  for (int n = 0; n < steps; ++n) {
+    const Eigen::VectorXd& f = forcing_active(c.forcing, n * dt, dt) ? forcing : none;
+    integrator.set_force(f);
+    const Eigen::VectorXd q_n = integrator.q(), c_n = integrator.casing();
+    integrator.step();
+    const std::vector<int>& set = integrator.coulomb_tips();
+    if (!set.empty()) {
+      const Eigen::VectorXd q_pred =
+          2.0 * q_n - q_prev - aq_llt.solve(dt * dt * (kq * q_n) + dt * (cq * (q_n - q_prev)));
+      const Eigen::VectorXd c_pred =
+          2.0 * c_n - c_prev + ac_llt.solve(dt * dt * (f - kc * c_n) - dt * (cc * (c_n - c_prev)));
+      const std::vector<TipContact>& tips = integrator.predicted_tips();
+      const int m = static_cast<int>(set.size());
+      Eigen::MatrixXd bq = Eigen::MatrixXd::Zero(2 * m, r), bc = Eigen::MatrixXd::Zero(2 * m, nc);
+      Eigen::VectorXd lambda(2 * m);
+      for (int a = 0; a < m; ++a) {
+        const TipContact& t = tips[set[a]];
+        bq(2 * a, t.q_u) = -1.0;
+        bq(2 * a + 1, t.q_v) = 1.0;
+        for (int b = 0; b < 4; ++b)
+          if (t.c_u[b] >= 0) {
+            bc(2 * a, t.c_u[b]) += t.shape[b];
+            bc(2 * a + 1, t.c_v[b]) -= t.shape[b];
+          }
+        lambda(2 * a) = integrator.lambda()(set[a]);
+        lambda(2 * a + 1) = integrator.tangential_lambda()(set[a]);
+        sticking += integrator.contact_states()[set[a]] == ReducedContactState::stick;
+      }
+      const Eigen::MatrixXd aq_bt = aq_llt.solve(bq.transpose());
+      const Eigen::MatrixXd ac_bt = ac_llt.solve(bc.transpose());
+      const Eigen::MatrixXd w = dt * dt * (bq * aq_bt + bc * ac_bt);
+      worst_w = std::max(worst_w, (integrator.coulomb_w() - w).cwiseAbs().maxCoeff() /
+                                      w.cwiseAbs().maxCoeff());
+      contact.evaluate(q_pred, q_n, c_pred, c_n, dt, (n + 1) * dt, tips_here);
+      for (int a = 0; a < m; ++a) {
+        // Relative to R_c, the largest term summed into g~.
+        worst_rows = std::max(
+            worst_rows, std::abs(integrator.coulomb_predicted()(2 * a) - tips_here[set[a]].gap) /
+                            casing.radius);
+        worst_rows = std::max(worst_rows, std::abs(integrator.coulomb_predicted()(2 * a + 1) -
+                                                   tips_here[set[a]].slip) /
+                                              casing.radius);
+      }
+      const Eigen::VectorXd dq = dt * dt * (aq_bt * lambda);
+      const Eigen::VectorXd dc = dt * dt * (ac_bt * lambda);
+      const double size = std::max(q_n.cwiseAbs().maxCoeff(), c_n.cwiseAbs().maxCoeff());
+      max_x = std::max(max_x, size);
+      worst_x =
+          std::max(worst_x, std::max(((integrator.q() - q_pred) - dq).cwiseAbs().maxCoeff(),
+                                     ((integrator.casing() - c_pred) - dc).cwiseAbs().maxCoeff()) /
+                                size);
+      ++checked;
+    }
+    q_prev = q_n;
+    c_prev = c_n;
+  }
+  std::printf("%d closing steps (%d sticking tip-steps); cond(A_q) %.2e, cond(A_c) %.2e; worst: W "
+              "%.3e relative, [g~; s~] %.3e of R_c, x_{n+1} - x~ %.3e of max |x_n|\n",
+              checked, sticking, cond_q, cond_c, worst_w, worst_rows, worst_x);
+  EXPECT_GT(checked, 0);
+  EXPECT_GT(sticking, 0);
+  // Both sides solve with A by backward-stable Cholesky factorizations (the
+  // integrator: explicit A^-1 columns and a sparse LDL^T predictor; here dense
+  // LLT solves): their results differ by at most n cond(A) eps relative (Higham,
+  // Accuracy and Stability, ch. 10), n = r or n_c, the larger bound taken.
+  const double solve_bound = std::max(r * cond_q, nc * cond_c) * eps;
+  EXPECT_LE(worst_w, solve_bound);
+  // x~ sums 2 x_n, x_{n-1} and A^-1 (dt^2 K x_n + dt C dx), the last below
+  // 4 max |x| for dt < 2/omega_max (the damping term is smaller): terms of
+  // at most 8 max|x|, each carrying the solve bound, and the correction's own.
+  EXPECT_LE(worst_x, 8.0 * solve_bound);
+  // g~ = R_c + N . u_c - R_t - u: 4 eps R_c for the radii, plus the x~ bound
+  // times |N|_1 + 1 <= 3.2 (Hermite values <= 1, slope values <= the element
+  // length 0.079 m), relative to R_c; the slip the same without the radii.
+  EXPECT_LE(worst_rows, 4.0 * eps + 3.2 * 8.0 * solve_bound * max_x / casing.radius);
 }
 
 TEST(ReducedCoulomb, TangentialMultipliersOfTheRubbingRun) {
