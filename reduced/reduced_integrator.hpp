@@ -234,8 +234,8 @@ private:
   Eigen::VectorXd m_rows; ///< [g~; s~] over the solved tips
   Eigen::VectorXd m_rows_lambda, m_rows_y;
   std::vector<TipContact> m_predicted_kept; ///< Coulomb: the predicted tips of a closing step
-  std::vector<TipContact> m_tips;      ///< tips at the current state
-  std::vector<TipContact> m_predicted; ///< tips at the predicted state of the step
+  std::vector<TipContact> m_tips;           ///< tips at the current state
+  std::vector<TipContact> m_predicted;      ///< tips at the predicted state of the step
   // Work storage of solve_contact, kept between steps.
   std::vector<char> m_active;
   std::vector<char> m_known;
