@@ -488,6 +488,27 @@ TEST(ReducedCoulomb, TangentialMultipliersOfTheRubbingRun) {
   EXPECT_GT(slipping, 0);
 }
 
+TEST(ReducedCoulomb, NonFinitePredictionIsReportedWithItsStep) {
+  // A NaN in the state must stop the step with the step number, not reach
+  // the contact solver (which would refuse it as bad input) or the history.
+  const Case c = coulomb_case(0.0, 0.001);
+  const BladedDisk bd = assemble_bladed_disk(c);
+  const ReducedBasis basis = reduce_bladed_disk(bd, "cb", 10);
+  const Casing casing = assemble_casing(c);
+  const ReducedTipContact contact(bd, basis, casing, c);
+  ReducedIntegrator integrator(basis, casing, c.time.step, contact);
+  Eigen::VectorXd q0 = Eigen::VectorXd::Zero(basis.n_reduced());
+  q0(basis.boundary_position[0]) = std::numeric_limits<double>::quiet_NaN(); // tip 1's u
+  integrator.start(Eigen::VectorXd::Zero(casing.n_dofs()), q0);
+  try {
+    integrator.step();
+    FAIL() << "a NaN tip displacement was carried on";
+  } catch (const ReducedIntegrationError& e) {
+    std::printf("reported: %s\n", e.what());
+    EXPECT_NE(std::string(e.what()).find("at step 1"), std::string::npos);
+  }
+}
+
 // ---- (d) mu = 0 -------------------------------------------------------------
 
 TEST(ReducedCoulomb, WithoutFrictionIsTheSlidingSignRunToRoundOff) {
