@@ -12,7 +12,8 @@ ReducedTipContact::ReducedTipContact(const BladedDisk& bladed_disk, const Reduce
     , m_tip_radius(c.bladed_disk.tip_radius)
     , m_casing_radius(casing.radius)
     , m_omega(c.operating_point.rotation_speed)
-    , m_mu(c.operating_point.friction_coefficient) {
+    , m_mu(c.operating_point.friction_coefficient)
+    , m_law(c.operating_point.friction_law) {
   // The partition's boundary is bladed_disk.boundary = (u_0, v_0, u_1, v_1, ...).
   for (int k = 0; k < bladed_disk.n_sectors; ++k) {
     m_q_u.push_back(basis.boundary_position[2 * k]);
@@ -37,6 +38,7 @@ void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd
     const Eigen::Vector4d n = hermite_values(position - element, m_casing_radius * pitch);
     double u_casing = 0.0;
     double v_casing_rate = 0.0;
+    double v_casing_increment = 0.0;
     for (int a = 0; a < 4; ++a) {
       const int first = m_node_first[(element + a / 2) % n_nodes];
       tip.shape[a] = n(a);
@@ -44,11 +46,15 @@ void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd
       tip.c_v[a] = first < 0 ? -1 : first + 2 + a % 2;
       if (first < 0) continue;
       u_casing += n(a) * c(tip.c_u[a]);
-      v_casing_rate += n(a) * ((c(tip.c_v[a]) - c_before(tip.c_v[a])) / dt);
+      const double increment = c(tip.c_v[a]) - c_before(tip.c_v[a]);
+      v_casing_rate += n(a) * (increment / dt);
+      v_casing_increment += n(a) * increment;
     }
     tip.gap = m_casing_radius + u_casing - m_tip_radius - q(tip.q_u);
     tip.sliding = m_omega * (m_tip_radius + q(tip.q_u)) + (q(tip.q_v) - q_before(tip.q_v)) / dt -
                   v_casing_rate;
+    tip.slip = m_omega * (m_tip_radius + q(tip.q_u)) * dt + (q(tip.q_v) - q_before(tip.q_v)) -
+               v_casing_increment;
     tip.sign = m_mu > 0.0 ? static_cast<double>((tip.sliding > 0.0) - (tip.sliding < 0.0)) : 0.0;
   }
 }

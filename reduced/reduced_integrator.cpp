@@ -1,5 +1,6 @@
 #include "reduced_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -24,7 +25,9 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     , m_mc(casing.mass)
     , m_dt(dt)
     , m_mu(contact.friction_coefficient())
-    , m_contact(contact) {
+    , m_contact(contact)
+    , m_law(contact.friction_law())
+    , m_coulomb(1, contact.friction_coefficient()) {
   const Eigen::Index r = m_kq.rows();
   if (damping.bladed_disk.size() != 0) {
     if (damping.bladed_disk.size() != r ||
@@ -149,6 +152,12 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
   for (int k = 0; k < m_contact.n_tips(); ++k)
     m_gap(k) = m_tips[k].gap;
   m_lambda = Eigen::VectorXd::Zero(m_contact.n_tips());
+  m_lambda_t = Eigen::VectorXd::Zero(m_contact.n_tips());
+  m_lambda_t_zero = true;
+  m_state.assign(m_contact.n_tips(), ReducedContactState::open);
+  m_state_before = m_state;
+  m_warm = Eigen::VectorXd::Zero(2 * m_contact.n_tips());
+  m_certificate = ReducedCoulombCertificate{};
   m_initial_energy = energy();
   m_external_work = m_contact_work = m_damping_work = 0.0;
 }
@@ -238,6 +247,151 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
                                 std::to_string(m_n + 1));
 }
 
+Eigen::Matrix2d ReducedIntegrator::coulomb_block(const TipContact& i, const TipContact& j) const {
+  // Rows B_n,i = (-e(u_i); +N_i on c_u), B_t,i = (+e(v_i); -N_i on c_v); the
+  // same for the columns of j.
+  double nn = m_mq_inverse(i.q_u, j.q_u);
+  double nt = -m_mq_inverse(i.q_u, j.q_v);
+  double tn = -m_mq_inverse(i.q_v, j.q_u);
+  double tt = m_mq_inverse(i.q_v, j.q_v);
+  for (int a = 0; a < 4; ++a) {
+    if (i.c_u[a] < 0) continue;
+    for (int b = 0; b < 4; ++b) {
+      if (j.c_u[b] < 0) continue;
+      const double nab = i.shape[a] * j.shape[b];
+      nn += nab * m_mc_inverse(i.c_u[a], j.c_u[b]);
+      nt -= nab * m_mc_inverse(i.c_u[a], j.c_v[b]);
+      tn -= nab * m_mc_inverse(i.c_v[a], j.c_u[b]);
+      tt += nab * m_mc_inverse(i.c_v[a], j.c_v[b]);
+    }
+  }
+  const double dt2 = m_dt * m_dt;
+  Eigen::Matrix2d w;
+  w << dt2 * nn, dt2 * nt, dt2 * tn, dt2 * tt;
+  return w;
+}
+
+void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepReport& report) {
+  const int nt = static_cast<int>(tips.size());
+  m_state_before.swap(m_state);
+  m_state.assign(nt, ReducedContactState::open);
+  m_lambda.setZero(nt);
+  m_lambda_t.setZero(nt);
+  m_certificate = ReducedCoulombCertificate{};
+  m_active.assign(nt, 0);
+  m_set.clear();
+  m_w.resize(0, 0);
+  m_rows.resize(0);
+  int n_active = 0;
+  for (int k = 0; k < nt; ++k) {
+    if (!std::isfinite(tips[k].gap) || !std::isfinite(tips[k].slip))
+      throw ReducedIntegrationError("reduced integrator: non-finite predicted gap or slip of tip " +
+                                    std::to_string(k + 1) + " at step " + std::to_string(m_n + 1));
+    if (tips[k].gap < 0.0) m_active[k] = 1, ++n_active;
+  }
+  if (n_active > 0) {
+    for (int round = 0;; ++round) {
+      m_set.clear();
+      for (int k = 0; k < nt; ++k)
+        if (m_active[k]) m_set.push_back(k);
+      const int m = static_cast<int>(m_set.size());
+      m_w.resize(2 * m, 2 * m);
+      m_rows.resize(2 * m);
+      m_rows_lambda.resize(2 * m);
+      for (int a = 0; a < m; ++a) {
+        const TipContact& tip = tips[m_set[a]];
+        m_rows(2 * a) = tip.gap;
+        m_rows(2 * a + 1) = tip.slip;
+        m_rows_lambda.segment<2>(2 * a) = m_warm.segment<2>(2 * m_set[a]);
+        for (int b = 0; b < m; ++b)
+          m_w.block<2, 2>(2 * a, 2 * b) = coulomb_block(tip, tips[m_set[b]]);
+      }
+      const CoulombGaussSeidelReport solved = m_coulomb.solve(m_w, m_rows, m_rows_lambda);
+      if (!solved.converged())
+        throw ReducedIntegrationError("reduced integrator: Coulomb contact problem at step " +
+                                      std::to_string(m_n + 1) + ": " + solved.message);
+      for (int a = 0; a < m; ++a)
+        m_warm.segment<2>(2 * m_set[a]) = m_rows_lambda.segment<2>(2 * a);
+      bool joined = false; // tips left out whose gap the correction would close
+      for (int k = 0; k < nt; ++k) {
+        if (m_active[k]) continue;
+        double g = tips[k].gap;
+        for (int a = 0; a < m; ++a) {
+          const Eigen::Matrix2d w = coulomb_block(tips[k], tips[m_set[a]]);
+          g += w(0, 0) * m_rows_lambda(2 * a) + w(0, 1) * m_rows_lambda(2 * a + 1);
+        }
+        if (g < 0.0) m_active[k] = 1, joined = true;
+      }
+      if (!joined) break;
+      if (round >= nt)
+        throw ReducedIntegrationError(
+            "reduced integrator: the set of closing tips did not settle at step " +
+            std::to_string(m_n + 1));
+    }
+    m_predicted_kept = tips;
+    const std::vector<ReducedContactState>& states = m_coulomb.states();
+    const int m = static_cast<int>(m_set.size());
+    for (int a = 0; a < m; ++a) {
+      m_lambda(m_set[a]) = m_rows_lambda(2 * a);
+      m_lambda_t(m_set[a]) = m_rows_lambda(2 * a + 1);
+      m_state[m_set[a]] = states[a];
+    }
+    m_certificate = reduced_coulomb_certificate(m_w, m_rows, 1, m_mu, m_rows_lambda, states);
+    // The scaled stick/slip residual (reduced_integrator.hpp).
+    m_rows_y = m_rows;
+    m_rows_y.noalias() += m_w * m_rows_lambda;
+    const double largest = m_rows_lambda.cwiseAbs().maxCoeff();
+    double scaled = largest > 0.0 ? m_certificate.max_open_residual / largest : 0.0;
+    for (int a = 0; a < m; ++a) {
+      const double ln = m_rows_lambda(2 * a);
+      const double lt = m_rows_lambda(2 * a + 1);
+      const double slip = m_rows_y(2 * a + 1);
+      const double sigma =
+          std::abs(m_rows(2 * a + 1)) + m_w.row(2 * a + 1).cwiseAbs().sum() * largest;
+      if (states[a] == ReducedContactState::stick) {
+        if (sigma > 0.0) scaled = std::max(scaled, std::abs(slip) / sigma);
+      } else if (states[a] == ReducedContactState::slip) {
+        if (lt != 0.0 && sigma > 0.0) {
+          const double e = lt > 0.0 ? -1.0 : 1.0; // the slip direction lambda_t opposes
+          scaled = std::max(scaled, std::max(-slip * e, 0.0) / sigma);
+        }
+        if (m_mu * ln > 0.0)
+          scaled = std::max(scaled, std::abs(std::abs(lt) - m_mu * ln) / (m_mu * ln));
+      }
+    }
+    report.max_cone_violation = m_certificate.max_cone_violation;
+    report.max_stick_slip_residual = scaled;
+  }
+  // Tips outside the solved set stay open with lambda = 0: their start is 0.
+  for (int k = 0; k < nt; ++k) {
+    if (!m_active[k]) m_warm.segment<2>(2 * k).setZero();
+    if (m_state[k] != m_state_before[k]) ++report.stick_slip_transitions;
+    report.n_stick += m_state[k] == ReducedContactState::stick;
+    report.n_slip += m_state[k] == ReducedContactState::slip;
+  }
+}
+
+void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
+  const double dt2 = m_dt * m_dt;
+  m_dq.setZero();
+  m_dc.setZero();
+  for (int j = 0; j < m_lambda.size(); ++j) {
+    if (m_lambda(j) == 0.0 && m_lambda_t(j) == 0.0) continue;
+    const TipContact& tip = tips[j];
+    const double f = dt2 * m_lambda(j);
+    const double ft = dt2 * m_lambda_t(j);
+    m_dq -= f * m_mq_inverse.col(tip.q_u);
+    if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
+    for (int b = 0; b < 4; ++b) {
+      if (tip.c_u[b] < 0) continue;
+      m_dc += f * tip.shape[b] * m_mc_inverse.col(tip.c_u[b]);
+      if (ft != 0.0) m_dc -= ft * tip.shape[b] * m_mc_inverse.col(tip.c_v[b]);
+    }
+  }
+  m_q_next += m_dq;
+  m_c_next += m_dc;
+}
+
 void ReducedIntegrator::predict_casing() {
   // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y by
   // Eigen's triangular solves on the factor (no permutation in place), and
@@ -289,10 +443,17 @@ StepReport ReducedIntegrator::step() {
   predict_casing();
   const double t_next = (m_n + 1) * m_dt;
   m_contact.evaluate(m_q_next, m_q, m_c_next, m_c, m_dt, t_next, m_predicted);
-  solve_contact(m_predicted);
+  StepReport report;
+  const bool coulomb = m_law == FrictionLaw::coulomb;
+  if (coulomb)
+    solve_coulomb(m_predicted, report);
+  else
+    solve_contact(m_predicted);
 
   const bool corrected = m_lambda.any();
-  if (corrected) {
+  if (coulomb) {
+    if (corrected) correct_coulomb(m_predicted);
+  } else if (corrected) {
     m_dq.setZero();
     m_dc.setZero();
     for (int j = 0; j < m_lambda.size(); ++j) {
@@ -313,10 +474,35 @@ StepReport ReducedIntegrator::step() {
     m_casing_work = m_c_next - m_c_prev;
     m_external_work += 0.5 * m_force.dot(m_casing_work);
   }
-  for (int j = 0; j < m_lambda.size(); ++j)
-    if (m_lambda(j) != 0.0)
-      m_contact_work +=
-          0.5 * m_lambda(j) * direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
+  if (coulomb) {
+    for (int j = 0; j < m_lambda.size(); ++j)
+      if (m_lambda(j) != 0.0) {
+        // B_n . dx and B_t . dx over dx = x_{n+1} - x_{n-1}, at tip j's entries.
+        const TipContact& tip = m_predicted[j];
+        double normal = -(m_q_next(tip.q_u) - m_q_prev(tip.q_u));
+        double tangential = m_q_next(tip.q_v) - m_q_prev(tip.q_v);
+        for (int b = 0; b < 4; ++b)
+          if (tip.c_u[b] >= 0) {
+            normal += tip.shape[b] * (m_c_next(tip.c_u[b]) - m_c_prev(tip.c_u[b]));
+            tangential -= tip.shape[b] * (m_c_next(tip.c_v[b]) - m_c_prev(tip.c_v[b]));
+          }
+        m_contact_work += 0.5 * (m_lambda(j) * normal + m_lambda_t(j) * tangential);
+      }
+  } else {
+    for (int j = 0; j < m_lambda.size(); ++j)
+      if (m_lambda(j) != 0.0)
+        m_contact_work += 0.5 * m_lambda(j) *
+                          direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
+    // The tangential force the law applied, -mu sign lambda (tangential_lambda()).
+    if (corrected) {
+      for (int j = 0; j < m_lambda.size(); ++j)
+        m_lambda_t(j) = m_lambda(j) != 0.0 ? -m_mu * m_predicted[j].sign * m_lambda(j) : 0.0;
+      m_lambda_t_zero = false;
+    } else if (!m_lambda_t_zero) {
+      m_lambda_t.setZero();
+      m_lambda_t_zero = true;
+    }
+  }
 
   if (m_q_damped || m_c_damped) m_damping_work += step_damping_work();
 
@@ -332,7 +518,6 @@ StepReport ReducedIntegrator::step() {
     m_contact.evaluate(m_q, m_q_prev, m_c, m_c_prev, m_dt, t_next, m_tips);
   else
     m_tips.swap(m_predicted);
-  StepReport report;
   for (int k = 0; k < m_lambda.size(); ++k) {
     const double g = m_tips[k].gap;
     const double l = m_lambda(k);
@@ -342,7 +527,7 @@ StepReport ReducedIntegrator::step() {
     report.max_complementarity = std::max(report.max_complementarity, std::abs(l * g));
     if (l == 0.0) continue;
     ++report.n_active;
-    if (m_mu > 0.0 && m_tips[k].sign != m_predicted[k].sign) {
+    if (!coulomb && m_mu > 0.0 && m_tips[k].sign != m_predicted[k].sign) {
       ++report.sliding_reversals;
       report.max_friction_residual = std::max(
           report.max_friction_residual, m_mu * l * std::abs(m_tips[k].sign - m_predicted[k].sign));
