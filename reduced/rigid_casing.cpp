@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <Eigen/Geometry>
+
 namespace rsi {
 namespace {
 
