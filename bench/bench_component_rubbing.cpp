@@ -168,7 +168,7 @@ int main(int argc, char** argv) {
     phi_min = std::min(phi_min, casing.polar_angle(c));
     phi_max = std::max(phi_max, casing.polar_angle(c));
   }
-  const double period = 2.0 * M_PI / omega;
+  const double period = 2.0 * M_PI / std::abs(omega);
   const int n_samples = static_cast<int>(std::lround(revolutions * steps_per_rev));
   std::printf("case %s: %d dofs, %zu boundary dofs, %zu contact nodes (r %.3f..%.3f, phi "
               "%.4f..%.4f rad), response dof %d (node %d dir %d); load %.2f s\n",
