@@ -136,8 +136,10 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                       "(Cholesky failed)");
     m_p = (m_dt * m_dt) * llt.solve(block(m_k, m_interior, m_interior));
     m_pb = (m_dt * m_dt) * llt.solve(Eigen::MatrixXd(kbi.transpose()));
-    if (m_c.size())
-      m_d = m_dt * llt.solve(Eigen::MatrixXd(take(m_c, m_interior).asDiagonal()));
+    if (m_c.size()) {
+      m_ci = take(m_c, m_interior);
+      m_d = m_dt * llt.solve(Eigen::MatrixXd(m_ci.asDiagonal()));
+    }
   }
   m_w = 0.5 * (m_w + m_w.transpose()).eval();
   m_pred.setZero(3 * m_nc);
@@ -151,20 +153,27 @@ Eigen::VectorXd ComponentIntegrator::boundary_of(const Eigen::VectorXd& x) const
   return take(x, m_boundary);
 }
 
+Eigen::Vector3d ComponentIntegrator::node_of(const Eigen::VectorXd& u_boundary, int c) const {
+  const std::array<int, 3>& k = m_casing.boundary_index(c);
+  return Eigen::Vector3d(u_boundary(k[0]), u_boundary(k[1]), u_boundary(k[2]));
+}
+
 void ComponentIntegrator::gaps_at(const Eigen::VectorXd& u_boundary, double t) {
-  const Eigen::VectorXd y = m_b * u_boundary;
+  // B_B is 3 x 3 blocks (the frames) on each node's ux, uy, uz: applied block by block.
   for (int c = 0; c < m_nc; ++c)
-    m_gap(c) = m_casing.imposed_gap(c, t) + y(3 * c);
+    m_gap(c) = m_casing.imposed_gap(c, t) + m_casing.frame(c).row(0).dot(node_of(u_boundary, c));
 }
 
 void ComponentIntegrator::predict_contact(const Eigen::VectorXd& u_trial,
                                           const Eigen::VectorXd& u_now, double t_next) {
   // [g~; s~] per contact: g(t_{n+1}) + e_n.u~, [e_t1; e_t2](u~ - u_n) + (0, r Omega dt).
-  m_pred.noalias() = m_b * (u_trial - u_now);
-  const Eigen::VectorXd normal = m_b * u_now;
   for (int c = 0; c < m_nc; ++c) {
-    m_pred(3 * c) += normal(3 * c) + m_casing.imposed_gap(c, t_next);
-    m_pred(3 * c + 2) += m_casing.casing_slip(c, m_dt);
+    const Eigen::Matrix3d& f = m_casing.frame(c);
+    const Eigen::Vector3d now = node_of(u_now, c);
+    const Eigen::Vector3d y = f * (node_of(u_trial, c) - now);
+    m_pred(3 * c) = y(0) + f.row(0).dot(now) + m_casing.imposed_gap(c, t_next);
+    m_pred(3 * c + 1) = y(1);
+    m_pred(3 * c + 2) = y(2) + m_casing.casing_slip(c, m_dt);
   }
 }
 
@@ -283,9 +292,8 @@ StepReport ComponentIntegrator::step() {
     // Work of (*) at time n: lambda_n . B (x_{n+1} - x_{n-1}) / 2.
     if (m_lambda.any()) m_contact_work += 0.5 * m_lambda.dot(m_b * (m_un - m_up));
     if (m_c.size()) {
-      const Eigen::VectorXd dq = m_xn - m_xp;
-      const Eigen::VectorXd ci = take(m_c, m_interior);
-      m_damping_work += dq.dot(ci.cwiseProduct(dq)) / (4.0 * m_dt);
+      m_work_b = m_xn - m_xp;
+      m_damping_work += m_work_b.dot(m_ci.cwiseProduct(m_work_b)) / (4.0 * m_dt);
     }
     m_lambda = m_lambda_next;
     m_xp.swap(m_x);

@@ -84,6 +84,7 @@
 // critical step (unless forced), a contact solve that does not converge or
 // a non-finite state throw ComponentIntegrationError naming the step.
 
+#include <array>
 #include <stdexcept>
 #include <vector>
 
@@ -161,6 +162,8 @@ private:
   /// Solves the contact of the prediction in m_pred into m_lambda, fills the report.
   void solve_contact(StepReport& report);
   void gaps_at(const Eigen::VectorXd& u_boundary, double t);
+  /// Contact node c's ux, uy, uz from the boundary coordinates.
+  Eigen::Vector3d node_of(const Eigen::VectorXd& u_boundary, int c) const;
   Eigen::VectorXd boundary_of(const Eigen::VectorXd& x) const;
 
   bool m_massless = false;
@@ -178,6 +181,7 @@ private:
   Eigen::MatrixXd m_k;   ///< K^ (energy)
   Eigen::MatrixXd m_m;   ///< M^ (energy)
   Eigen::VectorXd m_c;   ///< diag C^ (empty: undamped)
+  Eigen::VectorXd m_ci;  ///< MacNeal: diag C^ on the interior coordinates (damped)
   // CB: x = full; MacNeal: x = interior q_I, u = u_B.
   Eigen::MatrixXd m_p;   ///< CB: dt^2 A^-1 K^; MacNeal: dt^2 A_I^-1 K^_II
   Eigen::MatrixXd m_pb;  ///< MacNeal: dt^2 A_I^-1 K^_IB

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -63,7 +64,9 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
     s.stick_contact_steps += r.n_stick;
     s.slip_contact_steps += r.n_slip;
     const bool sample = n % options.output_every == 0;
-    if (sample || n % options.energy_every == 0 || n == options.steps) {
+    const bool check = n % options.energy_every == 0 || n == options.steps;
+    if (sample && !check) record(std::numeric_limits<double>::quiet_NaN());
+    if (check) {
       const double e = integrator.energy();
       const double wc = integrator.contact_work(), wd = integrator.damping_work();
       s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd});

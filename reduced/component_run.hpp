@@ -26,7 +26,8 @@ struct ComponentHistory {
   std::vector<double> response;         ///< the response dof [length]
   std::vector<Eigen::VectorXd> gap;     ///< nc per row [length]
   std::vector<Eigen::VectorXd> lambda;  ///< 3 nc per row: n, t1, t2 per contact [force]
-  std::vector<double> energy, contact_work, damping_work;
+  std::vector<double> energy;           ///< E at the rows that are energy checks, NaN at the others
+  std::vector<double> contact_work, damping_work;
   int n_rows() const { return static_cast<int>(time.size()); }
 };
 
@@ -48,7 +49,7 @@ struct ComponentRunSummary {
 struct ComponentRunOptions {
   int steps = 0;            ///< >= 1
   int output_every = 1;     ///< >= 1
-  int energy_every = 1;     ///< >= 1; also every output row
+  int energy_every = 1;     ///< >= 1; rows between energy checks carry energy NaN
   double balance_tolerance = 1e-8; ///< relative, in (0, 1)
 };
 
