@@ -272,10 +272,10 @@ int main(int argc, char** argv) {
             << h.energy[k] << ',' << h.contact_work[k] << ',' << h.damping_work[k] << '\n';
     }
     std::printf("%-8s %3d modes: r %3d, basis %.2f s, critical dt %.3e s, dt %.3e s (%d a "
-                "revolution), %d steps, integration %.3f s (%.2f us/step), %s\n",
+                "revolution), %d steps, integration %.3f s wall, %.3f s CPU (%.2f us/step wall), %s\n",
                 spec.method.c_str(), spec.modes, res.r, res.basis_s, res.critical_dt, res.dt,
                 steps_per_rev * res.every, res.steps, res.summary.integration_seconds,
-                1e6 * res.summary.integration_seconds / std::max(res.steps, 1),
+                res.summary.integration_cpu_seconds, 1e6 * res.summary.integration_seconds / std::max(res.steps, 1),
                 res.summary.status.c_str());
     std::printf("         certificate: penetration %.2e, cone %.2e, stick/slip residual %.2e, "
                 "transitions %ld, stick %ld, slip %ld contact-steps, GS sweeps %ld; energy "

@@ -77,7 +77,8 @@
 //
 // Costs per contact-free step (dense): CB/CCM 2 r^2 (+ 2 r^2 damped);
 // MacNeal 2 (psi^2 + 2 psi n_B) (+ 2 psi^2 damped) plus 6 n_B for the gaps.
-// A step with a closing contact adds the Gauss-Seidel solve and 2 r 3 nc.
+// A step with a closing contact adds the Gauss-Seidel solve (on the
+// closing contacts only, grown while their forces close others) and 2 r 3 nc.
 //
 // Errors: bad arguments throw std::invalid_argument ("ComponentIntegrator:
 // what, allowed range"); a failed factorization, a dt at or above the
@@ -190,6 +191,8 @@ private:
   Eigen::VectorXd m_x, m_xp, m_xn;  ///< CB: x_n, x_{n-1}; MacNeal: q_I^n, q_I^{n-1}; scratch
   Eigen::VectorXd m_u, m_up, m_un;  ///< MacNeal: u_B^n, u_B^{n-1}; scratch
   Eigen::VectorXd m_pred, m_gap, m_lambda, m_lambda_next, m_work_b;
+  Eigen::MatrixXd m_wa;           ///< W on the contacts of the step's active set
+  Eigen::VectorXd m_pa, m_la;     ///< [g~; s~] and lambda on them
   std::vector<ReducedContactState> m_state;
   CoulombGaussSeidel m_solver;
   double m_initial_energy = 0.0, m_contact_work = 0.0, m_damping_work = 0.0;

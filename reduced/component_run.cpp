@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -42,6 +43,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   s.completed = true;
   bool first_contact = true;
   const auto t0 = std::chrono::steady_clock::now();
+  const std::clock_t c0 = std::clock();
   for (int n = 1; n <= options.steps; ++n) {
     StepReport r;
     try {
@@ -87,6 +89,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   }
   s.integration_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  s.integration_cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   s.final_contact_work = integrator.contact_work();
   s.final_damping_work = integrator.damping_work();
   s.sweeps = integrator.sweeps();

@@ -37,7 +37,8 @@ struct ComponentRunSummary {
   bool completed = false;
   std::string status;
   double dt = 0.0, omega_max = 0.0, critical_dt = 0.0;
-  double integration_seconds = 0.0;
+  double integration_seconds = 0.0;     ///< wall time of the step loop
+  double integration_cpu_seconds = 0.0; ///< the process's CPU time over it (std::clock)
   double max_penetration = 0.0, min_lambda = 0.0, max_complementarity = 0.0;
   double max_cone_violation = 0.0, max_stick_slip_residual = 0.0;
   long stick_slip_transitions = 0, stick_contact_steps = 0, slip_contact_steps = 0;
