@@ -12,7 +12,8 @@
 // Usage:
 //   bench_component_rubbing CASE [--revolutions R] [--steps-per-revolution N]
 //       [--methods macneal:10,cb:10,...] [--reference cb:20] [--response NODE.DIR]
-//       [--ccx-cache DIR] [--safety 0.9] [--csv PREFIX]
+//       [--ccx-cache DIR] [--safety 0.9] [--csv PREFIX] [--omega W] [--mu MU] [--zeta Z]
+//       [--whole-w]
 // CB/CCM run at dt = T / (k N), k the smallest integer with dt <= safety x
 // 2/omega_max (their own stable step), sampled every k steps so that every
 // run is compared at the same N samples a revolution. e_2 = ||x - x_ref||_2 /
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   std::string response = "";
   std::string cache = "build/ccx-cache";
   std::string csv;
+  bool whole_w = false; // --whole-w: Gauss-Seidel on the whole W every contact step
   double safety = 0.9, omega = 1344.0, mu = 0.15, gm = 0.356, zeta = 0.005;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -121,6 +123,7 @@ int main(int argc, char** argv) {
     else if (a == "--omega") omega = std::stod(next());
     else if (a == "--mu") mu = std::stod(next());
     else if (a == "--zeta") zeta = std::stod(next());
+    else if (a == "--whole-w") whole_w = true;
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
@@ -237,6 +240,7 @@ int main(int argc, char** argv) {
     ComponentIntegratorOptions o;
     o.mu = mu;
     o.damping = modal_damping(basis, zeta);
+    o.closing_subset = !whole_w;
     // First at the sampling step, forced, only to read omega_max.
     o.dt = period / steps_per_rev;
     o.force_step = true;

@@ -48,6 +48,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                 ", allowed a finite value > 0");
   m_dt = options.dt;
   m_mu = options.mu;
+  m_subset = options.closing_subset;
   m_r = basis.n_reduced();
   m_massless = basis.massless_boundary;
   m_boundary = basis.boundary_position;
@@ -197,7 +198,7 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
     std::vector<int> active;
     std::vector<char> in(m_nc, 0);
     for (int c = 0; c < m_nc; ++c)
-      if (m_pred(3 * c) < 0.0) {
+      if (m_pred(3 * c) < 0.0 || !m_subset) {
         active.push_back(c);
         in[c] = 1;
       }

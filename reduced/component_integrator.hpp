@@ -109,6 +109,9 @@ struct ComponentIntegratorOptions {
   double mu = 0.0;          ///< Coulomb friction coefficient, >= 0
   Eigen::VectorXd damping;  ///< diag(C^), r entries >= 0 (modal_damping), or empty: undamped
   bool force_step = false;  ///< integrate even if dt >= 2/omega_max
+  /// Solve each step's contact on the closing contacts only (grown as
+  /// needed); false: on the whole W (the plain way, kept to cross-check).
+  bool closing_subset = true;
   CoulombGaussSeidelOptions coulomb;
 };
 
@@ -155,6 +158,8 @@ public:
   double initial_energy() const { return m_initial_energy; }
   double contact_work() const { return m_contact_work; }
   double damping_work() const { return m_damping_work; }
+  /// W of every step's contact problem (3 nc square; constant over a run).
+  const Eigen::MatrixXd& contact_matrix() const { return m_w; }
   /// Gauss-Seidel sweeps summed over the run.
   long sweeps() const { return m_sweeps; }
 
@@ -168,6 +173,7 @@ private:
   Eigen::VectorXd boundary_of(const Eigen::VectorXd& x) const;
 
   bool m_massless = false;
+  bool m_subset = true;
   double m_dt = 0.0;
   double m_mu = 0.0;
   double m_omega_max = 0.0;
