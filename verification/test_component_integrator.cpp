@@ -252,6 +252,13 @@ TEST(ComponentIntegrator, RefusesStepAboveCriticalAndBadArguments) {
     std::printf("refused: %s\n", e.what());
     EXPECT_NE(std::string(e.what()).find("critical step"), std::string::npos);
   }
+  // MacNeal: the massless boundary condensed, omega_max = omega_t = 1 rad/s
+  // (k/m): 2.1 s is above 2/omega_t = 2 s, 1.9 s below it.
+  const ReducedBasis mn = reduce(chain(1e-8).k, chain(1e-8).m, model.boundary, "macneal", 3);
+  o.dt = 2.1;
+  EXPECT_THROW(ComponentIntegrator(mn, plane(), o), ComponentIntegrationError);
+  o.dt = 1.9;
+  EXPECT_NO_THROW(ComponentIntegrator(mn, plane(), o));
   o.dt = -1.0;
   EXPECT_THROW(ComponentIntegrator(cb, plane(), o), std::invalid_argument);
   EXPECT_THROW(RigidCasing({Eigen::Vector3d(0, 0, 1)}, {{0, 1, 2}}, {}, 1.0),
