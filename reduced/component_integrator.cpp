@@ -135,11 +135,24 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     if (llt.info() != Eigen::Success)
       throw ComponentIntegrationError(kWhere + "M^_II + dt/2 C^_I is not positive definite "
                                       "(Cholesky failed)");
-    m_p = (m_dt * m_dt) * llt.solve(block(m_k, m_interior, m_interior));
-    m_pb = (m_dt * m_dt) * llt.solve(Eigen::MatrixXd(kbi.transpose()));
+    // With u_B^n = Z q_I^n + S B_B^T lambda_n (the balance (B)), the force of
+    // (I) is K^_II q + K^_IB u_B = K_c q + K^_IB S B_B^T lambda_n, K_c the
+    // condensed stiffness K^_II - K^_IB S K^_BI (Omega_1^2 for MacNeal): a
+    // contact-free step applies K_c and Z only (2 (psi^2 + psi n_B) flops),
+    // the contact adds the columns of the contacts that carry a force.
+    Eigen::MatrixXd kc = block(m_k, m_interior, m_interior) + kbi.transpose() * m_z;
+    kc = 0.5 * (kc + kc.transpose()).eval();
+    m_p = (m_dt * m_dt) * llt.solve(kc);
+    m_pb = (m_dt * m_dt) * llt.solve(Eigen::MatrixXd(kbi.transpose() * m_g));
     if (m_c.size()) {
       m_ci = take(m_c, m_interior);
-      m_d = m_dt * llt.solve(Eigen::MatrixXd(m_ci.asDiagonal()));
+      const Eigen::MatrixXd mii = block(m_m, m_interior, m_interior);
+      if (Eigen::MatrixXd(mii.diagonal().asDiagonal()) == mii) {
+        // Diagonal M^_II (MacNeal: I): dt A^-1 C^ is the diagonal dt c/(m + dt/2 c).
+        m_d_diagonal = (m_dt * m_ci).cwiseQuotient(mii.diagonal() + 0.5 * m_dt * m_ci);
+      } else {
+        m_d = m_dt * llt.solve(Eigen::MatrixXd(m_ci.asDiagonal()));
+      }
     }
   }
   m_w = 0.5 * (m_w + m_w.transpose()).eval();
@@ -327,8 +340,11 @@ StepReport ComponentIntegrator::step() {
     // (I): q_I^{n+1} with u_B^n in balance with lambda_n.
     m_xn = 2.0 * m_x - m_xp;
     m_xn.noalias() -= m_p * m_x;
-    m_xn.noalias() -= m_pb * m_u;
+    for (int c = 0; c < m_nc; ++c)
+      if (m_lambda.segment(3 * c, 3).any())
+        m_xn.noalias() -= m_pb.middleCols(3 * c, 3) * m_lambda.segment(3 * c, 3);
     if (m_d.size()) m_xn.noalias() -= m_d * (m_x - m_xp);
+    if (m_d_diagonal.size()) m_xn -= m_d_diagonal.cwiseProduct(m_x - m_xp);
     // (B) at n+1 with the contact on the condensed boundary.
     m_un.noalias() = m_z * m_xn;
     predict_contact(m_un, m_u, t_next);

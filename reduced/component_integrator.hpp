@@ -38,6 +38,9 @@
 //      A_I (q_I^{n+1} - 2 q_I^n + q_I^{n-1}) = -dt^2 (K^_II q_I^n + K^_IB u_B^n)
 //                                              - dt C^_I (q_I^n - q_I^{n-1}),   (I)
 //    A_I = M^_II + dt/2 C^_I (B_I = 0: contact acts on the boundary only).
+//    In (I) the code uses (B) to write K^_II q_I^n + K^_IB u_B^n =
+//    K_c q_I^n + K^_IB S B_B^T lambda_n, K_c = K^_II - K^_IB S K^_BI the
+//    condensed stiffness (the same numbers in exact arithmetic, fewer flops).
 //    The step n -> n+1 (NLstep's leapfrog, Monjaraz-Tec, Gross, Krack,
 //    Comput. Struct. 260 (2022) 106698: explicit on the modes, static
 //    condensation of the boundary with the contact solved on it):
@@ -76,7 +79,8 @@
 // balance -S K^_BI q_I^0 (the structure at rest before t = 0).
 //
 // Costs per contact-free step (dense): CB/CCM 2 r^2 (+ 2 r^2 damped);
-// MacNeal 2 (psi^2 + 2 psi n_B) (+ 2 psi^2 damped) plus 6 n_B for the gaps.
+// MacNeal 2 (psi^2 + psi n_B) (+ 3 psi damped, M^_II = I) plus about 30 nc
+// for the gaps and slips.
 // A step with a closing contact adds the Gauss-Seidel solve (on the
 // closing contacts only, grown while their forces close others) and 2 r 3 nc.
 //
@@ -191,8 +195,9 @@ private:
   Eigen::VectorXd m_ci;  ///< MacNeal: diag C^ on the interior coordinates (damped)
   // CB: x = full; MacNeal: x = interior q_I, u = u_B.
   Eigen::MatrixXd m_p;   ///< CB: dt^2 A^-1 K^; MacNeal: dt^2 A_I^-1 K^_II
-  Eigen::MatrixXd m_pb;  ///< MacNeal: dt^2 A_I^-1 K^_IB
-  Eigen::MatrixXd m_d;   ///< dt A^-1 C^ (damped)
+  Eigen::MatrixXd m_pb;  ///< MacNeal: dt^2 A_I^-1 K^_IB S B_B^T (psi x 3 nc)
+  Eigen::MatrixXd m_d;   ///< dt A^-1 C^ (damped, dense M^)
+  Eigen::VectorXd m_d_diagonal; ///< MacNeal with diagonal M^_II: dt A_I^-1 C^_I as a vector
   Eigen::MatrixXd m_z;   ///< MacNeal: -S K^_BI (n_B x psi)
   Eigen::VectorXd m_x, m_xp, m_xn;  ///< CB: x_n, x_{n-1}; MacNeal: q_I^n, q_I^{n-1}; scratch
   Eigen::VectorXd m_u, m_up, m_un;  ///< MacNeal: u_B^n, u_B^{n-1}; scratch
