@@ -202,7 +202,8 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
     m_state.assign(m_nc, ReducedContactState::open);
   } else {
     // The solve on the contacts that may carry a force: A = the closing ones
-    // (g~ < 0), grown by every contact that the others' forces close
+    // (g~ < 0) and those that carried a force at the previous step (fewer
+    // re-solves), grown by every contact that the others' forces close
     // (g~_c + W_cA lambda_A < 0), until none does. A lambda that vanishes off
     // A, with those gaps >= 0, satisfies the whole problem's law (open
     // contacts: lambda_c = 0, g_c >= 0); the certificate below checks it on
@@ -211,7 +212,7 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
     std::vector<int> active;
     std::vector<char> in(m_nc, 0);
     for (int c = 0; c < m_nc; ++c)
-      if (m_pred(3 * c) < 0.0 || !m_subset) {
+      if (m_pred(3 * c) < 0.0 || m_lambda_next(3 * c) > 0.0 || !m_subset) {
         active.push_back(c);
         in[c] = 1;
       }

@@ -59,13 +59,17 @@
 //    leaves q_I'' + C q_I' + (K^_II - K^_IB S K^_BI) q_I = 0, whose largest
 //    eigenvalue (M^_II = I) is omega_max^2 of reduced/critical_step (for
 //    MacNeal the condensed stiffness is Omega_1^2: omega_max = omega_psi),
-//    so dt < 2/omega_psi. Caveat (stated, measured in the tests): a
-//    CLOSED contact constrains u_B, and the interior then sees the
-//    constrained condensation, stiffer than the free one (the infinite
-//    eigenvalues of the massless boundary come down when u_B is held; in
-//    the limit all of u_B held, K^_II = Omega^2 + Phi_1B^T R_B^-1 Phi_1B).
-//    A long closed contact can thus be unstable at a step the free modes
-//    allow; the energy monitor of the run detects it.
+//    so dt < 2/omega_psi: what the constructor checks. Caveat: a CLOSED
+//    contact constrains u_B (its normal; in stick also its tangents), and
+//    the interior then sees the constrained condensation, stiffer than the
+//    free one (the infinite eigenvalues of the massless boundary come down
+//    when u_B is held; all of u_B held, K^_II = Omega^2 + Phi_1B^T R_B^-1
+//    Phi_1B for MacNeal). A long closed contact can thus be unstable at a
+//    step the free modes allow; run_component's energy monitor reports it.
+//    Measured (bench_component_rubbing, bench/RESULTS.md), Rotor 37
+//    MacNeal-50: 2/omega of the interior 1.70e-5 s free, 1.63e-5 s with the
+//    16 normals held, 1.03e-5 s with the whole boundary held, against the
+//    README's 4.675e-6 s.
 //
 // Energy (both schemes; the central-difference identity of (*), multiplied
 // by (x_{n+1} - x_{n-1})/2):
