@@ -240,6 +240,74 @@ TEST(ComponentIntegrator, EnergyBalanceClosesToRoundOffWithDampingAndFriction) {
   }
 }
 
+// Stick with a massless boundary. The casing does not slide (Omega = 0)
+// and is pressed into B by delta (constant gap g_0 = -delta); the interior
+// starts at rest displaced by y_0 along e_t2 = +y (B with it: free and
+// massless, B follows I). From t = 0, B is held at (-delta, y_0) (normal
+// closed, tangent stuck), so with omega^2 = (k + k_c)/m, s = k_c/(k + k_c):
+//   q_x(t) = -s delta (1 - cos(omega t)),
+//   q_y(t) = y_0 (s + (1 - s) cos(omega t)),
+//   lambda_n = k_c (q_x + delta) >= k_c delta (1 - 2 s),
+//   |lambda_t2| = k_c |y_0 - q_y| <= 2 k_c (1 - s) y_0,
+// and stick holds throughout while 2 k_c (1 - s) y_0 <= mu k_c delta (1 - 2 s),
+// i.e. y_0 <= mu delta (k - k_c)/(2 k) = 3.75e-5 delta/1e-3 here: y_0 = 2e-5.
+// Central differences from rest (q_{-1} = q_1) reproduce A cos(omega_d t_n)
+// exactly, with omega_d = (2/dt) asin(omega dt/2): the error is the phase
+// alone, |A| omega t (omega dt)^2/24 (1 + (omega dt)^2) for omega dt <= 0.1.
+TEST(ComponentIntegrator, MacNealStickOnAPressedPlaneMatchesExactSolution) {
+  const double delta = 1e-3, y0 = 2e-5, dt = 0.04, end = 20.0;
+  const Model model = chain(1e-8);
+  const ReducedBasis basis = reduce(model.k, model.m, model.boundary, "macneal", 3);
+  const RigidCasing casing({Eigen::Vector3d(kR, 0.0, 0.0)}, {{0, 1, 2}},
+                           {CasingGapKind::constant, -delta, 0.0, 0.15}, 0.0);
+  ComponentIntegratorOptions o;
+  o.dt = dt;
+  o.mu = kMu;
+  ComponentIntegrator integrator(basis, casing, o);
+  // T is square (n = 6 = 3 boundary + 3 modes): q0 = T^-1 u0 exactly.
+  Eigen::VectorXd u0 = Eigen::VectorXd::Zero(6);
+  u0(1) = y0; // B, uy
+  u0(4) = y0; // I, uy
+  const Eigen::VectorXd q0 = basis.transformation.fullPivLu().solve(u0);
+  integrator.start(q0);
+  ComponentRunOptions ro;
+  ro.steps = static_cast<int>(std::lround(end / dt));
+  ComponentHistory hx;
+  const ComponentRunSummary sx = run_component(integrator, basis.transformation.row(3), ro, hx, true);
+  integrator.start(q0);
+  ComponentHistory hy;
+  const ComponentRunSummary sy = run_component(integrator, basis.transformation.row(4), ro, hy, true);
+  ASSERT_TRUE(sx.completed) << sx.status;
+  ASSERT_TRUE(sy.completed) << sy.status;
+  const double w = omega_n(), sr = kKc / (kK + kKc), wdt = w * dt;
+  double ex = 0.0, ey = 0.0;
+  for (int n = 0; n < hx.n_rows(); ++n) {
+    const double t = hx.time[n];
+    ex = std::max(ex, std::abs(hx.response[n] + sr * delta * (1.0 - std::cos(w * t))));
+    ey = std::max(ey, std::abs(hy.response[n] - y0 * (sr + (1.0 - sr) * std::cos(w * t))));
+  }
+  const double phase = w * end * wdt * wdt / 24.0 * (1.0 + wdt * wdt);
+  std::printf("MacNeal-3 stick: |x err| %.3e (bound %.3e), |y err| %.3e (bound %.3e); stick %ld, "
+              "slip %ld contact-steps, transitions %ld, cone %.2e, stick residual %.2e, balance "
+              "%.2e of %.2e\n",
+              ex, sr * delta * phase, ey, (1.0 - sr) * y0 * phase, sx.stick_contact_steps,
+              sx.slip_contact_steps, sx.stick_slip_transitions, sx.max_cone_violation,
+              sx.max_stick_slip_residual, sx.energy_balance_error, sx.energy_scale);
+  // Exact solution above, phase bound; plus the eps = 1e-8 model difference
+  // (1e-6 of the amplitude, as in the slip test).
+  EXPECT_LE(ex, sr * delta * (phase + 1e-6));
+  EXPECT_LE(ey, (1.0 - sr) * y0 * (phase + 1e-6));
+  // Sticks at every step (the closed contact of t = 0 counts in start()).
+  EXPECT_EQ(sx.stick_contact_steps, ro.steps);
+  EXPECT_EQ(sx.slip_contact_steps, 0);
+  // Certificate: the stick residual (|s| per the largest predicted slip) at
+  // round-off of a 3 x 3 solve; the cone not reached at all (|lambda_t| stays
+  // below mu lambda_n by (3.75 - 2)/3.75 of it, far above round-off).
+  EXPECT_LE(sx.max_stick_slip_residual, 1e-12);
+  EXPECT_LE(sx.max_cone_violation, 0.0);
+  EXPECT_LE(sx.energy_balance_error, ro.steps * 6 * 2.2e-16 * sx.energy_scale);
+}
+
 TEST(ComponentIntegrator, RefusesStepAboveCriticalAndBadArguments) {
   const Model model = chain(1e-4);
   const ReducedBasis cb = reduce(model.k, model.m, model.boundary, "cb", 3);
