@@ -56,7 +56,8 @@ struct Spec {
 
 Spec parse_spec(const std::string& s) {
   const auto colon = s.find(':');
-  if (colon == std::string::npos) throw std::invalid_argument("method spec '" + s + "': want name:modes");
+  if (colon == std::string::npos)
+    throw std::invalid_argument("method spec '" + s + "': want name:modes");
   return {s.substr(0, colon), std::stoi(s.substr(colon + 1))};
 }
 
@@ -112,18 +113,30 @@ int main(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(a + ": missing value");
       return argv[++i];
     };
-    if (a == "--revolutions") revolutions = std::stod(next());
-    else if (a == "--steps-per-revolution") steps_per_rev = std::stoi(next());
-    else if (a == "--methods") methods = next();
-    else if (a == "--reference") reference = next();
-    else if (a == "--response") response = next();
-    else if (a == "--ccx-cache") cache = next();
-    else if (a == "--safety") safety = std::stod(next());
-    else if (a == "--csv") csv = next();
-    else if (a == "--omega") omega = std::stod(next());
-    else if (a == "--mu") mu = std::stod(next());
-    else if (a == "--zeta") zeta = std::stod(next());
-    else if (a == "--whole-w") whole_w = true;
+    if (a == "--revolutions")
+      revolutions = std::stod(next());
+    else if (a == "--steps-per-revolution")
+      steps_per_rev = std::stoi(next());
+    else if (a == "--methods")
+      methods = next();
+    else if (a == "--reference")
+      reference = next();
+    else if (a == "--response")
+      response = next();
+    else if (a == "--ccx-cache")
+      cache = next();
+    else if (a == "--safety")
+      safety = std::stod(next());
+    else if (a == "--csv")
+      csv = next();
+    else if (a == "--omega")
+      omega = std::stod(next());
+    else if (a == "--mu")
+      mu = std::stod(next());
+    else if (a == "--zeta")
+      zeta = std::stod(next());
+    else if (a == "--whole-w")
+      whole_w = true;
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
@@ -147,7 +160,8 @@ int main(int argc, char** argv) {
   // Contact nodes: the boundary's nodes, in boundary order.
   std::vector<int> nodes;
   for (int d : component.boundary)
-    if (nodes.empty() || nodes.back() != component.dofs[d].node) nodes.push_back(component.dofs[d].node);
+    if (nodes.empty() || nodes.back() != component.dofs[d].node)
+      nodes.push_back(component.dofs[d].node);
   const RigidCasing casing = rigid_casing_of(component, nodes, oval_casing_gap(gm), omega);
   // Response dof: NODE.DIR, default the first contact node's direction 2.
   int response_node = nodes.front(), response_dir = 2;
@@ -176,8 +190,8 @@ int main(int argc, char** argv) {
   const int n_samples = static_cast<int>(std::lround(revolutions * steps_per_rev));
   std::printf("case %s: %d dofs, %zu boundary dofs, %zu contact nodes (r %.3f..%.3f, phi "
               "%.4f..%.4f rad), response dof %d (node %d dir %d); load %.2f s\n",
-              case_path.c_str(), component.n_dofs(), component.boundary.size(), nodes.size(),
-              r_min, r_max, phi_min, phi_max, response_dof, response_node, response_dir, load_s);
+              case_path.c_str(), component.n_dofs(), component.boundary.size(), nodes.size(), r_min,
+              r_max, phi_min, phi_max, response_dof, response_node, response_dir, load_s);
   std::printf("Omega %.1f rad/s (T %.4e s), g_m %.3f, mu %.2f, zeta %.4f, %.2f revolutions, %d "
               "samples a revolution\n",
               omega, period, gm, mu, zeta, revolutions, steps_per_rev);
@@ -205,13 +219,15 @@ int main(int argc, char** argv) {
       // the held directions constrained: S - S H^T (H S H^T)^-1 H S.
       std::vector<int> b = basis.boundary_position, in;
       std::vector<char> is_b(res.r, 0);
-      for (int k : b) is_b[k] = 1;
+      for (int k : b)
+        is_b[k] = 1;
       for (int k = 0; k < res.r; ++k)
         if (!is_b[k]) in.push_back(k);
       const auto blk = [&](const std::vector<int>& rr, const std::vector<int>& cc) {
         Eigen::MatrixXd out(rr.size(), cc.size());
         for (size_t i = 0; i < rr.size(); ++i)
-          for (size_t j = 0; j < cc.size(); ++j) out(i, j) = basis.stiffness(rr[i], cc[j]);
+          for (size_t j = 0; j < cc.size(); ++j)
+            out(i, j) = basis.stiffness(rr[i], cc[j]);
         return out;
       };
       const Eigen::MatrixXd kbb = blk(b, b), kbi = blk(b, in), kii = blk(in, in);
@@ -223,12 +239,14 @@ int main(int argc, char** argv) {
           s -= hs.transpose() * (hs * h.transpose()).ldlt().solve(hs);
         }
         const Eigen::MatrixXd k = kii - kbi.transpose() * s * kbi;
-        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> e(0.5 * (k + k.transpose()), Eigen::EigenvaluesOnly);
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> e(0.5 * (k + k.transpose()),
+                                                               Eigen::EigenvaluesOnly);
         return std::sqrt(std::max(e.eigenvalues().maxCoeff(), 0.0));
       };
       Eigen::MatrixXd normals = Eigen::MatrixXd::Zero(casing.n_contacts(), b.size());
       for (int c = 0; c < casing.n_contacts(); ++c)
-        for (int a = 0; a < 3; ++a) normals(c, casing.boundary_index(c)[a]) = casing.frame(c)(0, a);
+        for (int a = 0; a < 3; ++a)
+          normals(c, casing.boundary_index(c)[a]) = casing.frame(c)(0, a);
       const double w_free = omega_held(Eigen::MatrixXd(0, b.size()));
       const double w_normal = omega_held(normals);
       const double w_all = omega_held(Eigen::MatrixXd::Identity(b.size(), b.size()));
@@ -272,22 +290,23 @@ int main(int argc, char** argv) {
       out.precision(10);
       out << "t,response,lambda_n_sum,energy,contact_work,damping_work\n";
       for (int k = 0; k < h.n_rows(); ++k)
-        out << h.time[k] << ',' << h.response[k] << ',' << res.normal_sum[k] << ','
-            << h.energy[k] << ',' << h.contact_work[k] << ',' << h.damping_work[k] << '\n';
+        out << h.time[k] << ',' << h.response[k] << ',' << res.normal_sum[k] << ',' << h.energy[k]
+            << ',' << h.contact_work[k] << ',' << h.damping_work[k] << '\n';
     }
-    std::printf("%-8s %3d modes: r %3d, basis %.2f s, critical dt %.3e s, dt %.3e s (%d a "
-                "revolution), %d steps, integration %.3f s wall, %.3f s CPU (%.2f us/step wall), %s\n",
-                spec.method.c_str(), spec.modes, res.r, res.basis_s, res.critical_dt, res.dt,
-                steps_per_rev * res.every, res.steps, res.summary.integration_seconds,
-                res.summary.integration_cpu_seconds, 1e6 * res.summary.integration_seconds / std::max(res.steps, 1),
-                res.summary.status.c_str());
+    std::printf(
+        "%-8s %3d modes: r %3d, basis %.2f s, critical dt %.3e s, dt %.3e s (%d a "
+        "revolution), %d steps, integration %.3f s wall, %.3f s CPU (%.2f us/step wall), %s\n",
+        spec.method.c_str(), spec.modes, res.r, res.basis_s, res.critical_dt, res.dt,
+        steps_per_rev * res.every, res.steps, res.summary.integration_seconds,
+        res.summary.integration_cpu_seconds,
+        1e6 * res.summary.integration_seconds / std::max(res.steps, 1), res.summary.status.c_str());
     std::printf("         certificate: penetration %.2e, cone %.2e, stick/slip residual %.2e, "
                 "transitions %ld, stick %ld, slip %ld contact-steps, GS sweeps %ld; energy "
                 "balance %.2e of scale %.3e, W_contact %.4e, W_damp %.4e\n",
                 res.summary.max_penetration, res.summary.max_cone_violation,
                 res.summary.max_stick_slip_residual, res.summary.stick_slip_transitions,
-                res.summary.stick_contact_steps, res.summary.slip_contact_steps,
-                res.summary.sweeps, res.summary.energy_balance_error, res.summary.energy_scale,
+                res.summary.stick_contact_steps, res.summary.slip_contact_steps, res.summary.sweeps,
+                res.summary.energy_balance_error, res.summary.energy_scale,
                 res.summary.final_contact_work, res.summary.final_damping_work);
     std::fflush(stdout);
     results.push_back(std::move(res));

@@ -64,7 +64,8 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     if (!is_b[i]) m_interior.push_back(i);
   m_ni = static_cast<int>(m_interior.size());
   m_nc = casing.n_contacts();
-  if (m_nc < 1) throw std::invalid_argument(kWhere + "the casing has no contact node, allowed >= 1");
+  if (m_nc < 1)
+    throw std::invalid_argument(kWhere + "the casing has no contact node, allowed >= 1");
   if (options.damping.size() != 0) {
     if (options.damping.size() != m_r || !options.damping.allFinite() ||
         options.damping.minCoeff() < 0.0)
@@ -94,9 +95,10 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                     number(m_omega_max) + ", allowed a finite value > 0");
   if (m_dt >= critical_dt() && !options.force_step)
     throw ComponentIntegrationError(
-        kWhere + "dt = " + number(m_dt) + " s is at or above the critical step 2/omega_max = " +
-        number(critical_dt()) + " s of the " + basis.method + " model (omega_max = " +
-        number(m_omega_max) + " rad/s" + (m_massless ? ", massless boundary condensed" : "") +
+        kWhere + "dt = " + number(m_dt) +
+        " s is at or above the critical step 2/omega_max = " + number(critical_dt()) +
+        " s of the " + basis.method + " model (omega_max = " + number(m_omega_max) + " rad/s" +
+        (m_massless ? ", massless boundary condensed" : "") +
         "); allowed dt < critical step unless forced");
 
   if (!m_massless) {
@@ -118,13 +120,13 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     const Eigen::MatrixXd mbi = block(m_m, m_boundary, m_interior);
     if (mbb.cwiseAbs().maxCoeff() != 0.0 || (m_ni && mbi.cwiseAbs().maxCoeff() != 0.0))
       throw std::invalid_argument(kWhere + "the basis is flagged massless_boundary but M^_BB or "
-                                  "M^_BI is not exactly zero");
+                                           "M^_BI is not exactly zero");
     if (m_c.size() && take(m_c, m_boundary).any())
       throw std::invalid_argument(kWhere + "damping on a massless boundary coordinate, allowed 0");
     const Eigen::LLT<Eigen::MatrixXd> kbb(block(m_k, m_boundary, m_boundary));
     if (kbb.info() != Eigen::Success)
       throw ComponentIntegrationError(kWhere + "K^_BB of the massless boundary is not positive "
-                                      "definite (static condensation failed)");
+                                               "definite (static condensation failed)");
     const Eigen::MatrixXd kbi = block(m_k, m_boundary, m_interior);
     m_z = -kbb.solve(kbi);
     m_g = kbb.solve(Eigen::MatrixXd(m_b.transpose()));
@@ -134,7 +136,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     const Eigen::LLT<Eigen::MatrixXd> llt(ai);
     if (llt.info() != Eigen::Success)
       throw ComponentIntegrationError(kWhere + "M^_II + dt/2 C^_I is not positive definite "
-                                      "(Cholesky failed)");
+                                               "(Cholesky failed)");
     // With u_B^n = Z q_I^n + S B_B^T lambda_n (the balance (B)), the force of
     // (I) is K^_II q + K^_IB u_B = K_c q + K^_IB S B_B^T lambda_n, K_c the
     // condensed stiffness K^_II - K^_IB S K^_BI (Omega_1^2 for MacNeal): a
@@ -230,9 +232,9 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
       const CoulombGaussSeidelReport r = m_solver.solve(m_wa, m_pa, m_la);
       m_sweeps += r.sweeps;
       if (!r.converged())
-        throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n + 1) + " (t = " +
-                                        number((m_n + 1) * m_dt) + " s): contact solve failed: " +
-                                        r.message);
+        throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n + 1) +
+                                        " (t = " + number((m_n + 1) * m_dt) +
+                                        " s): contact solve failed: " + r.message);
       m_lambda_next.setZero();
       m_state.assign(m_nc, ReducedContactState::open);
       for (int i = 0; i < na; ++i) {
@@ -268,7 +270,8 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
     }
     const double stick = slip_scale > 0.0 ? cert.max_stick_residual / slip_scale : 0.0;
     const double slip = force_scale > 0.0 ? cert.max_slip_residual / force_scale : 0.0;
-    report.max_stick_slip_residual = std::max({stick, slip, force_scale > 0.0 ? cert.max_open_residual / force_scale : 0.0});
+    report.max_stick_slip_residual =
+        std::max({stick, slip, force_scale > 0.0 ? cert.max_open_residual / force_scale : 0.0});
     report.n_stick = cert.n_stick;
     report.n_slip = cert.n_slip;
   }
@@ -277,7 +280,9 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
     if (m_state[c] != before[c]) ++report.stick_slip_transitions;
 }
 
-void ComponentIntegrator::start() { start(Eigen::VectorXd::Zero(m_r)); }
+void ComponentIntegrator::start() {
+  start(Eigen::VectorXd::Zero(m_r));
+}
 
 void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   if (q0.size() != m_r || !q0.allFinite())

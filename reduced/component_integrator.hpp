@@ -15,7 +15,8 @@
 // diag(c) the modal damping of modal_damping.hpp (zero on the boundary).
 // No other external force; zero initial conditions (start()), or rest at
 // q0 for tests. Every time-n equation is discretized alike,
-//   M^ (x_{n+1} - 2 x_n + x_{n-1})/dt^2 + C^ (x_{n+1} - x_{n-1})/(2 dt) + K^ x_n = B^T lambda_n,   (*)
+//   M^ (x_{n+1} - 2 x_n + x_{n-1})/dt^2 + C^ (x_{n+1} - x_{n-1})/(2 dt) + K^ x_n = B^T lambda_n,
+//   (*)
 // the two schemes differ in which constraint determines lambda_n.
 //
 // 1. Mass-carrying boundary (CB, CCM, Guyan; M^ positive definite).
@@ -113,10 +114,10 @@ public:
 };
 
 struct ComponentIntegratorOptions {
-  double dt = 0.0;          ///< time step [s], > 0 and finite
-  double mu = 0.0;          ///< Coulomb friction coefficient, >= 0
-  Eigen::VectorXd damping;  ///< diag(C^), r entries >= 0 (modal_damping), or empty: undamped
-  bool force_step = false;  ///< integrate even if dt >= 2/omega_max
+  double dt = 0.0;         ///< time step [s], > 0 and finite
+  double mu = 0.0;         ///< Coulomb friction coefficient, >= 0
+  Eigen::VectorXd damping; ///< diag(C^), r entries >= 0 (modal_damping), or empty: undamped
+  bool force_step = false; ///< integrate even if dt >= 2/omega_max
   /// Solve each step's contact on the closing contacts only (grown as
   /// needed); false: on the whole W (the plain way, kept to cross-check).
   bool closing_subset = true;
@@ -190,24 +191,25 @@ private:
   std::vector<int> m_boundary; ///< positions of u_B in q (boundary order)
   std::vector<int> m_interior; ///< the other positions, ascending
   RigidCasing m_casing;
-  Eigen::MatrixXd m_b;   ///< B_B: 3 nc x n_B, the contact rows on u_B
-  Eigen::MatrixXd m_w;   ///< W, 3 nc square
-  Eigen::MatrixXd m_g;   ///< the correction per unit lambda: CB dt^2 A^-1 B^T (r x 3nc); MacNeal S B_B^T (n_B x 3nc)
-  Eigen::MatrixXd m_k;   ///< K^ (energy)
-  Eigen::MatrixXd m_m;   ///< M^ (energy)
-  Eigen::VectorXd m_c;   ///< diag C^ (empty: undamped)
-  Eigen::VectorXd m_ci;  ///< MacNeal: diag C^ on the interior coordinates (damped)
+  Eigen::MatrixXd m_b;  ///< B_B: 3 nc x n_B, the contact rows on u_B
+  Eigen::MatrixXd m_w;  ///< W, 3 nc square
+  Eigen::MatrixXd m_g;  ///< the correction per unit lambda: CB dt^2 A^-1 B^T (r x 3nc); MacNeal S
+                        ///< B_B^T (n_B x 3nc)
+  Eigen::MatrixXd m_k;  ///< K^ (energy)
+  Eigen::MatrixXd m_m;  ///< M^ (energy)
+  Eigen::VectorXd m_c;  ///< diag C^ (empty: undamped)
+  Eigen::VectorXd m_ci; ///< MacNeal: diag C^ on the interior coordinates (damped)
   // CB: x = full; MacNeal: x = interior q_I, u = u_B.
-  Eigen::MatrixXd m_p;   ///< CB: dt^2 A^-1 K^; MacNeal: dt^2 A_I^-1 K^_II
-  Eigen::MatrixXd m_pb;  ///< MacNeal: dt^2 A_I^-1 K^_IB S B_B^T (psi x 3 nc)
-  Eigen::MatrixXd m_d;   ///< dt A^-1 C^ (damped, dense M^)
-  Eigen::VectorXd m_d_diagonal; ///< MacNeal with diagonal M^_II: dt A_I^-1 C^_I as a vector
-  Eigen::MatrixXd m_z;   ///< MacNeal: -S K^_BI (n_B x psi)
-  Eigen::VectorXd m_x, m_xp, m_xn;  ///< CB: x_n, x_{n-1}; MacNeal: q_I^n, q_I^{n-1}; scratch
-  Eigen::VectorXd m_u, m_up, m_un;  ///< MacNeal: u_B^n, u_B^{n-1}; scratch
+  Eigen::MatrixXd m_p;             ///< CB: dt^2 A^-1 K^; MacNeal: dt^2 A_I^-1 K^_II
+  Eigen::MatrixXd m_pb;            ///< MacNeal: dt^2 A_I^-1 K^_IB S B_B^T (psi x 3 nc)
+  Eigen::MatrixXd m_d;             ///< dt A^-1 C^ (damped, dense M^)
+  Eigen::VectorXd m_d_diagonal;    ///< MacNeal with diagonal M^_II: dt A_I^-1 C^_I as a vector
+  Eigen::MatrixXd m_z;             ///< MacNeal: -S K^_BI (n_B x psi)
+  Eigen::VectorXd m_x, m_xp, m_xn; ///< CB: x_n, x_{n-1}; MacNeal: q_I^n, q_I^{n-1}; scratch
+  Eigen::VectorXd m_u, m_up, m_un; ///< MacNeal: u_B^n, u_B^{n-1}; scratch
   Eigen::VectorXd m_pred, m_gap, m_lambda, m_lambda_next, m_work_b;
-  Eigen::MatrixXd m_wa;           ///< W on the contacts of the step's active set
-  Eigen::VectorXd m_pa, m_la;     ///< [g~; s~] and lambda on them
+  Eigen::MatrixXd m_wa;       ///< W on the contacts of the step's active set
+  Eigen::VectorXd m_pa, m_la; ///< [g~; s~] and lambda on them
   std::vector<ReducedContactState> m_state;
   CoulombGaussSeidel m_solver;
   double m_initial_energy = 0.0, m_contact_work = 0.0, m_damping_work = 0.0;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -16,7 +16,8 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
                                   bool started) {
   const std::string where = "run_component: ";
   if (options.steps < 1)
-    throw std::invalid_argument(where + "steps = " + std::to_string(options.steps) + ", allowed >= 1");
+    throw std::invalid_argument(where + "steps = " + std::to_string(options.steps) +
+                                ", allowed >= 1");
   if (options.output_every < 1 || options.energy_every < 1)
     throw std::invalid_argument(where + "output_every and energy_every must be >= 1");
   if (!(options.balance_tolerance > 0.0 && options.balance_tolerance < 1.0))

@@ -23,10 +23,10 @@ namespace rsi {
 
 struct ComponentHistory {
   std::vector<double> time;
-  std::vector<double> response;         ///< the response dof [length]
-  std::vector<Eigen::VectorXd> gap;     ///< nc per row [length]
-  std::vector<Eigen::VectorXd> lambda;  ///< 3 nc per row: n, t1, t2 per contact [force]
-  std::vector<double> energy;           ///< E at the rows that are energy checks, NaN at the others
+  std::vector<double> response;        ///< the response dof [length]
+  std::vector<Eigen::VectorXd> gap;    ///< nc per row [length]
+  std::vector<Eigen::VectorXd> lambda; ///< 3 nc per row: n, t1, t2 per contact [force]
+  std::vector<double> energy;          ///< E at the rows that are energy checks, NaN at the others
   std::vector<double> contact_work, damping_work;
   int n_rows() const { return static_cast<int>(time.size()); }
 };
@@ -48,9 +48,9 @@ struct ComponentRunSummary {
 };
 
 struct ComponentRunOptions {
-  int steps = 0;            ///< >= 1
-  int output_every = 1;     ///< >= 1
-  int energy_every = 1;     ///< >= 1; rows between energy checks carry energy NaN
+  int steps = 0;                   ///< >= 1
+  int output_every = 1;            ///< >= 1
+  int energy_every = 1;            ///< >= 1; rows between energy checks carry energy NaN
   double balance_tolerance = 1e-8; ///< relative, in (0, 1)
 };
 

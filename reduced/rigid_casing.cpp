@@ -99,7 +99,8 @@ RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& 
     const int axis = d.kind == "ux" ? 0 : d.kind == "uy" ? 1 : d.kind == "uz" ? 2 : -1;
     if (axis < 0) continue;
     auto found = translations.find(d.node);
-    if (found == translations.end()) found = translations.emplace(d.node, std::array<int, 3>{-1, -1, -1}).first;
+    if (found == translations.end())
+      found = translations.emplace(d.node, std::array<int, 3>{-1, -1, -1}).first;
     found->second[axis] = i;
   }
   std::vector<Eigen::Vector3d> positions;

@@ -52,8 +52,8 @@ enum class CasingGapKind { constant, linear, oval };
 
 struct CasingGap {
   CasingGapKind kind = CasingGapKind::constant;
-  double g0 = 0.0;    ///< constant, linear: g(0); oval: g_m > 0 [length]
-  double rate = 0.0;  ///< linear: v [length/s], finite
+  double g0 = 0.0;     ///< constant, linear: g(0); oval: g_m > 0 [length]
+  double rate = 0.0;   ///< linear: v [length/s], finite
   double width = 0.15; ///< oval: w in (0, 1)
 };
 

@@ -31,7 +31,8 @@
 // 1/cos(omega_d dt/2) - 1 <= (omega dt)^2/8 (1 + (omega dt)^2/4), and its
 // frequency omega_d = (2/dt) asin(omega dt/2) = omega (1 + (omega dt)^2/24 +
 // 3 (omega dt)^4/640 + ...)):
-//   |q_x^n - q_x(tau_n)| <= (c/omega) [(omega dt)^2/8 + omega tau (omega dt)^2/24] (1 + (omega dt)^2)
+//   |q_x^n - q_x(tau_n)| <= (c/omega) [(omega dt)^2/8 + omega tau (omega dt)^2/24] (1 + (omega
+//   dt)^2)
 // (the last factor bounds the neglected higher orders for omega dt <= 0.1).
 
 #include <cmath>
@@ -84,7 +85,9 @@ RigidCasing plane() {
                      {CasingGapKind::linear, kV * kTc, kV, 0.15}, kOmega);
 }
 
-double omega_n() { return std::sqrt((kK + kKc) / kM); }
+double omega_n() {
+  return std::sqrt((kK + kKc) / kM);
+}
 
 double exact_x(double t) {
   const double tau = t - kTc;
@@ -154,8 +157,8 @@ TEST(ComponentIntegrator, MacNealAllModesMatchesExactMasslessSolution) {
   const Errors h = run(basis, dt / 2);
   std::printf("MacNeal-3: omega_max %.6f rad/s (critical %.4f s), dt %.3f: |x err| %.3e (bound "
               "%.3e, scale %.3e), |y err| %.3e (scale %.3e); dt/2: %.3e, %.3e; status %s\n",
-              e.summary.omega_max, e.summary.critical_dt, dt, e.x, normal_bound(dt), e.x_scale,
-              e.y, e.y_scale, h.x, h.y, e.summary.status.c_str());
+              e.summary.omega_max, e.summary.critical_dt, dt, e.x, normal_bound(dt), e.x_scale, e.y,
+              e.y_scale, h.x, h.y, e.summary.status.c_str());
   ASSERT_TRUE(e.summary.completed) << e.summary.status;
   ASSERT_TRUE(h.summary.completed) << h.summary.status;
   // Stable step of the massless model: the kept free modes, omega_t = 1 rad/s
@@ -201,8 +204,8 @@ TEST(ComponentIntegrator, CraigBamptonAllModesMatchesExactSolutionAndMacNeal) {
   }
   std::printf("CB-3 (eps %.0e): omega_max %.3f rad/s (critical %.5f s), dt %.4f: |x err| %.3e "
               "(bound %.3e), |y err| %.3e (scale %.3e); CB vs MacNeal(dt 0.04): x %.3e, y %.3e\n",
-              eps, c.summary.omega_max, c.summary.critical_dt, dt_cb, c.x, normal_bound(dt_cb),
-              c.y, c.y_scale, diff_x, diff_y);
+              eps, c.summary.omega_max, c.summary.critical_dt, dt_cb, c.x, normal_bound(dt_cb), c.y,
+              c.y_scale, diff_x, diff_y);
   ASSERT_TRUE(c.summary.completed) << c.summary.status;
   // In contact B's normal motion is prescribed, so the normal equation of I
   // is the massless one: only the central-difference bound at dt_cb, plus the
@@ -273,10 +276,12 @@ TEST(ComponentIntegrator, MacNealStickOnAPressedPlaneMatchesExactSolution) {
   ComponentRunOptions ro;
   ro.steps = static_cast<int>(std::lround(end / dt));
   ComponentHistory hx;
-  const ComponentRunSummary sx = run_component(integrator, basis.transformation.row(3), ro, hx, true);
+  const ComponentRunSummary sx =
+      run_component(integrator, basis.transformation.row(3), ro, hx, true);
   integrator.start(q0);
   ComponentHistory hy;
-  const ComponentRunSummary sy = run_component(integrator, basis.transformation.row(4), ro, hy, true);
+  const ComponentRunSummary sy =
+      run_component(integrator, basis.transformation.row(4), ro, hy, true);
   ASSERT_TRUE(sx.completed) << sx.status;
   ASSERT_TRUE(sy.completed) << sy.status;
   const double w = omega_n(), sr = kKc / (kK + kKc), wdt = w * dt;
@@ -341,7 +346,8 @@ TEST(RigidCasing, FrameAndOvalGap) {
   // e_n = -(cos, sin, 0), e_t1 = z, e_t2 = e_n x e_t1 = (-sin, cos, 0): exact up to 1 ulp.
   EXPECT_NEAR((f.row(0) - Eigen::RowVector3d(-std::cos(phi), -std::sin(phi), 0)).norm(), 0, 1e-15);
   EXPECT_NEAR((f.row(2) - Eigen::RowVector3d(-std::sin(phi), std::cos(phi), 0)).norm(), 0, 1e-15);
-  // Oval: g = -g_m where mod(theta, pi) = pi/2 (t = (pi/2 - phi)/Omega), g -> g_m(1 - 2e^{-1/(4*0.0225)}) at theta = 0.
+  // Oval: g = -g_m where mod(theta, pi) = pi/2 (t = (pi/2 - phi)/Omega), g -> g_m(1 -
+  // 2e^{-1/(4*0.0225)}) at theta = 0.
   const double t = (M_PI / 2 - phi) / 1344.0;
   EXPECT_NEAR(casing.imposed_gap(0, t), -0.356, 1e-12);
   EXPECT_NEAR(casing.imposed_gap(0, t + M_PI / 1344.0), -0.356, 1e-12);

@@ -57,7 +57,8 @@ struct RubbingRun {
 
 TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
   if (!executable_on_path("gmsh")) GTEST_SKIP() << "gmsh is not on PATH (Debian package gmsh)";
-  if (!executable_on_path("ccx")) GTEST_SKIP() << "ccx is not on PATH (Debian package calculix-ccx)";
+  if (!executable_on_path("ccx"))
+    GTEST_SKIP() << "ccx is not on PATH (Debian package calculix-ccx)";
   std::ifstream in(RSI_SOURCE_DIR "/data/cases/blade3d.json");
   const ComponentCase cc =
       parse_component_case(nlohmann::json::parse(in), RSI_SOURCE_DIR "/data/cases/blade3d.json");
@@ -86,7 +87,8 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
     ComponentRunOptions ro;
     ro.steps = 250 * every; // a quarter of a revolution
     ro.output_every = every;
-    out.summary = run_component(integrator, basis.transformation.row(response_dof), ro, out.history);
+    out.summary =
+        run_component(integrator, basis.transformation.row(response_dof), ro, out.history);
     std::printf("%s-10: r %d, critical dt %.4e s, dt %.4e s, %d steps in %.3f s, %s; penetration "
                 "%.2e mm, cone %.2e N, stick/slip residual %.2e, slip %ld, stick %ld "
                 "contact-steps; balance %.3e of %.3e N mm\n",
@@ -133,14 +135,16 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
   const RubbingRun whole = run("macneal", 1, false);
   double subset_diff = 0.0, size = 0.0;
   for (int k = 0; k < mn.history.n_rows(); ++k) {
-    subset_diff = std::max(subset_diff, std::abs(mn.history.response[k] - whole.history.response[k]));
+    subset_diff =
+        std::max(subset_diff, std::abs(mn.history.response[k] - whole.history.response[k]));
     size = std::max(size, std::abs(whole.history.response[k]));
   }
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(mn.w);
   const double cond_w = svd.singularValues()(0) / svd.singularValues().tail(1)(0);
   const double subset_bound = mn.summary.steps * cond_w * 1e-14 * size;
   std::printf("closing subset against whole W: response differs by %.3e of %.3e (bound %.3e, "
-              "cond(W) %.3e)\n", subset_diff, size, subset_bound, cond_w);
+              "cond(W) %.3e)\n",
+              subset_diff, size, subset_bound, cond_w);
   EXPECT_LE(subset_diff, subset_bound);
   double num = 0, den = 0, dmax = 0, rmax = 0;
   for (int k = 0; k < std::min(mn.history.n_rows(), cb.history.n_rows()); ++k) {
