@@ -1,0 +1,65 @@
+#pragma once
+// A run of ComponentIntegrator (component_integrator.hpp): the sampled
+// histories issue 12 asks for (time, a response dof, per contact node the
+// gap, lambda_n, lambda_t1, lambda_t2, energy and works) and a summary with
+// the worst certificate over every step (not only the sampled ones).
+//
+// Monitors, checked every step: the integrator's own (a contact solve that
+// fails, a non-finite state: ComponentIntegrationError, caught here and
+// reported as the status with its step); and the energy balance
+// |E - E_0 - W_contact + W_damp| <= balance_tolerance * scale, scale the
+// largest of E, |W_contact|, W_damp so far (checked every energy_every
+// steps: E costs 2 r^2). A run that breaks a monitor stops at that step,
+// completed = false, status says which and when.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "component_integrator.hpp"
+
+namespace rsi {
+
+struct ComponentHistory {
+  std::vector<double> time;
+  std::vector<double> response;        ///< the response dof [length]
+  std::vector<Eigen::VectorXd> gap;    ///< nc per row [length]
+  std::vector<Eigen::VectorXd> lambda; ///< 3 nc per row: n, t1, t2 per contact [force]
+  std::vector<double> energy;          ///< E at the rows that are energy checks, NaN at the others
+  std::vector<double> contact_work, damping_work;
+  int n_rows() const { return static_cast<int>(time.size()); }
+};
+
+struct ComponentRunSummary {
+  int steps_requested = 0;
+  int steps = 0;
+  bool completed = false;
+  std::string status;
+  double dt = 0.0, omega_max = 0.0, critical_dt = 0.0;
+  double integration_seconds = 0.0;     ///< wall time of the step loop
+  double integration_cpu_seconds = 0.0; ///< the process's CPU time over it (std::clock)
+  double max_penetration = 0.0, min_lambda = 0.0, max_complementarity = 0.0;
+  double max_cone_violation = 0.0, max_stick_slip_residual = 0.0;
+  long stick_slip_transitions = 0, stick_contact_steps = 0, slip_contact_steps = 0;
+  double initial_energy = 0.0, energy_balance_error = 0.0, energy_scale = 0.0;
+  double final_contact_work = 0.0, final_damping_work = 0.0;
+  long sweeps = 0;
+};
+
+struct ComponentRunOptions {
+  int steps = 0;                   ///< >= 1
+  int output_every = 1;            ///< >= 1
+  int energy_every = 1;            ///< >= 1; rows between energy checks carry energy NaN
+  double balance_tolerance = 1e-8; ///< relative, in (0, 1)
+};
+
+/// Starts `integrator` from zero initial conditions unless `started`, runs,
+/// and samples. `response_row`: a row of T (r entries). Throws
+/// std::invalid_argument for bad options.
+ComponentRunSummary run_component(ComponentIntegrator& integrator,
+                                  const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
+                                  const ComponentRunOptions& options, ComponentHistory& history,
+                                  bool started = false);
+
+} // namespace rsi
