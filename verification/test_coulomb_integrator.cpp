@@ -392,5 +392,80 @@ TEST(CoulombIntegrator, CertificateAtRoundOffOnTheDefaultCase) {
   }
 }
 
+// ------------------------------------------------------- numerical trouble
+
+/// The rigid plane of the oscillator runs, with a NaN gap from step `bad` on.
+class BrokenPlane : public FrictionalContactLaw {
+public:
+  BrokenPlane(const RigidSurfaceContact& law, double t_bad) : m_law(law), m_t_bad(t_bad) {}
+  int n_contacts() const override { return m_law.n_contacts(); }
+  int n_tangents() const override { return m_law.n_tangents(); }
+  double friction_coefficient() const override { return m_law.friction_coefficient(); }
+  void evaluate(const Eigen::Ref<const Eigen::VectorXd>& current,
+                const Eigen::Ref<const Eigen::VectorXd>& predicted, double t_next, double dt,
+                FrictionalContactGeometry& out) const override {
+    m_law.evaluate(current, predicted, t_next, dt, out);
+    if (t_next > m_t_bad) out.normal_gap(0) = std::numeric_limits<double>::quiet_NaN();
+  }
+
+private:
+  const RigidSurfaceContact& m_law;
+  double m_t_bad;
+};
+
+// A non-finite gap is reported with its step, and so is a failed per-step
+// solve (the solver allowed one Newton step on a 3D slip whose direction
+// turns, with a full mass block: the slip law is nonlinear there and one step
+// does not reach the stopping test), never carried on.
+TEST(CoulombIntegrator, NumericalTroubleIsReportedWithTheStep) {
+  RigidSurfaceNode node;
+  node.dofs = {{0, 1, 2}};
+  node.position = Eigen::Vector3d(0.25, 0.0, 0.0);
+  const RigidSurfaceContact plane({node}, ImposedGap::constant(0.0), 0.0, 0.15);
+  Eigen::SparseMatrix<double> k(3, 3), m(3, 3);
+  k.insert(1, 1) = 50.0;
+  k.insert(2, 2) = 80.0;
+  // A full mass block (W not diagonal: the one-contact problem has no
+  // closed-form Newton step).
+  const double mass[3][3] = {{2.0, 0.3, 0.2}, {0.3, 1.5, 0.4}, {0.2, 0.4, 1.0}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      m.insert(i, j) = mass[i][j];
+  const double dt = 1e-3;
+  Eigen::VectorXd f(3);
+  f << 10.0, 3.0, -4.0; // pressed on the plane, pulled along both tangents
+  {
+    const BrokenPlane broken(plane, 3.5 * dt);
+    CentralDifference cd(k, m, dt, broken);
+    cd.start(f);
+    for (int n = 0; n < 3; ++n)
+      cd.step();
+    try {
+      cd.step();
+      ADD_FAILURE() << "a NaN gap was carried on";
+    } catch (const IntegrationError& e) {
+      std::printf("NaN gap: %s\n", e.what());
+      EXPECT_NE(std::string(e.what()).find("at step 4"), std::string::npos) << e.what();
+    }
+  }
+  FrictionalContactSolverOptions one_step;
+  one_step.max_iterations = 1;
+  CentralDifference cd(k, m, dt, plane, RayleighDamping{}, one_step);
+  cd.start(f);
+  bool thrown = false;
+  for (int n = 0; n < 200 && !thrown; ++n) {
+    try {
+      cd.step();
+    } catch (const IntegrationError& e) {
+      std::printf("one Newton step: %s\n", e.what());
+      EXPECT_NE(std::string(e.what()).find("solver failed at step " + std::to_string(n + 1)),
+                std::string::npos)
+          << e.what();
+      thrown = true;
+    }
+  }
+  EXPECT_TRUE(thrown) << "one Newton step solved every step of a turning 3D slip";
+}
+
 } // namespace
 } // namespace rsi
