@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -16,12 +18,20 @@ void append(std::string& out, double x) {
 
 } // namespace
 
-std::string history_csv_header(int n_blades) {
+std::string history_csv_header(int n_blades, int n_tangents) {
+  if (n_tangents < 0 || n_tangents > 2)
+    throw std::invalid_argument("history_csv_header: n_tangents = " + std::to_string(n_tangents) +
+                                ", allowed 0, 1 or 2");
   std::string out = "t";
   for (int k = 1; k <= n_blades; ++k)
     out += ",gap_" + std::to_string(k);
   for (int k = 1; k <= n_blades; ++k)
     out += ",lambda_" + std::to_string(k);
+  for (int k = 1; k <= n_blades; ++k) {
+    if (n_tangents == 1) out += ",lambda_t_" + std::to_string(k);
+    if (n_tangents == 2)
+      out += ",lambda_t1_" + std::to_string(k) + ",lambda_t2_" + std::to_string(k);
+  }
   out += ",energy,external_work,contact_work,damping_work\n";
   return out;
 }
@@ -32,18 +42,40 @@ void append_history_csv_row(std::string& out, const HistoryRow& row) {
     out += ',', append(out, row.gap(k));
   for (Eigen::Index k = 0; k < row.lambda.size(); ++k)
     out += ',', append(out, row.lambda(k));
+  if (row.lambda_tangential)
+    for (Eigen::Index k = 0; k < row.lambda_tangential->size(); ++k)
+      out += ',', append(out, (*row.lambda_tangential)(k));
   for (double x : {row.energy, row.external_work, row.contact_work, row.damping_work})
     out += ',', append(out, x);
   out += '\n';
 }
 
+int history_csv_tangents(const HistoryRow& row) {
+  if (!row.lambda_tangential || row.gap.size() == 0) return 0;
+  return static_cast<int>(row.lambda_tangential->size() / row.gap.size());
+}
+
 std::string history_csv(const History& h) {
-  const int n_blades = h.n_rows() > 0 ? static_cast<int>(h.gap.front().size()) : 0;
-  std::string out = history_csv_header(n_blades);
-  for (int i = 0; i < h.n_rows(); ++i)
-    append_history_csv_row(out,
-                           HistoryRow{h.time[i], h.gap[i], h.lambda[i], h.energy[i],
-                                      h.external_work[i], h.contact_work[i], h.damping_work[i]});
+  const bool tangential = !h.lambda_tangential.empty();
+  if (tangential && static_cast<int>(h.lambda_tangential.size()) != h.n_rows())
+    throw std::invalid_argument("history_csv: lambda_tangential has " +
+                                std::to_string(h.lambda_tangential.size()) + " rows, allowed 0 or " +
+                                std::to_string(h.n_rows()));
+  std::string out;
+  for (int i = 0; i < h.n_rows(); ++i) {
+    const HistoryRow row{h.time[i],
+                         h.gap[i],
+                         h.lambda[i],
+                         h.energy[i],
+                         h.external_work[i],
+                         h.contact_work[i],
+                         h.damping_work[i],
+                         tangential ? &h.lambda_tangential[i] : nullptr};
+    if (i == 0)
+      out = history_csv_header(static_cast<int>(h.gap.front().size()), history_csv_tangents(row));
+    append_history_csv_row(out, row);
+  }
+  if (h.n_rows() == 0) out = history_csv_header(0);
   return out;
 }
 

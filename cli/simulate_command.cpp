@@ -74,7 +74,8 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   std::string line;
   run.run.history_sink = [&](const HistoryRow& row) {
     line.clear();
-    if (history_rows++ == 0) line = history_csv_header(static_cast<int>(row.gap.size()));
+    if (history_rows++ == 0)
+      line = history_csv_header(static_cast<int>(row.gap.size()), history_csv_tangents(row));
     append_history_csv_row(line, row);
     history_file.append(line);
   };
@@ -113,6 +114,11 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
       "max penetration %.3e m, min lambda %.3e N, max lambda %.3e N, max |lambda g| %.3e N m, "
       "sliding reversals %d\n",
       s.max_penetration, s.min_lambda, s.max_lambda, s.max_complementarity, s.sliding_reversals);
+  if (c.operating_point.friction_law == FrictionLaw::coulomb)
+    std::printf("coulomb certificate: max cone violation %.3e N, max stick/slip residual %.3e "
+                "(scaled), stick/slip transitions %d, contact-steps stick %ld slip %ld\n",
+                s.max_cone_violation, s.max_stick_slip_residual, s.stick_slip_transitions,
+                s.stick_contact_steps, s.slip_contact_steps);
   std::printf(
       "energy balance error %.3e J (scale %.3e J); W_ext %.6e J, W_contact %.6e J, W_damp %.6e J\n",
       s.energy_balance_error, s.energy_scale, s.final_external_work, s.final_contact_work,

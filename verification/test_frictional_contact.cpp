@@ -639,5 +639,29 @@ TEST(FrictionalContact, IterationLimitReported) {
   EXPECT_NE(sol.message.find("no convergence"), std::string::npos);
 }
 
+TEST(FrictionalContact, OpeningFromAWarmStartReachesZeroExactly) {
+  // The step of the default case (Omega = 310, friction_law coulomb) where
+  // blade 1 leaves the casing (step 2949): g~ > 0, the previous step's
+  // multipliers as the warm start. Exact solution: open, lambda = 0 (for
+  // one 2D contact with kappa = mu |W_nt| / W_nn = 0.047 < 1 the solution is
+  // unique, frictional_contact_solver.hpp). The open rows of the Newton
+  // matrix are rows of the identity, so the step sets lambda to 0 exactly;
+  // before the solver set that step exactly, the equilibrated solve left
+  // lambda shrinking by eps a step into the denormals and the stopping test
+  // |lambda_n| <= eta max|lambda| never passed.
+  Eigen::Matrix2d w;
+  w << 8.4041009693343095e-11, -2.6295384009817661e-11, -2.6295384009817661e-11,
+      3.1422294411725075e-10;
+  const FrictionalContactProblem p(1, 0.15, w, Eigen::VectorXd::Constant(1, 2.1945046890792241e-09),
+                                   Eigen::VectorXd::Constant(1, 7.6011619790008949e-05));
+  const FrictionalContactSolution sol =
+      FrictionalContactSolver().solve(p, Eigen::Vector2d(149.14303541230251, -22.37145531184537));
+  std::printf("%s: lambda = (%.3e, %.3e), %d Newton steps\n", sol.ok() ? "converged" : "failed",
+              sol.lambda(0), sol.lambda(1), sol.iterations);
+  ASSERT_TRUE(sol.ok()) << sol.message;
+  EXPECT_EQ(sol.lambda(0), 0.0); // open: exact zero (an identity row's step)
+  EXPECT_EQ(sol.lambda(1), 0.0);
+}
+
 } // namespace
 } // namespace rsi

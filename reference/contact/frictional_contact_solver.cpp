@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/LU>
 
@@ -52,7 +53,10 @@ public:
     const double scale = lambda.cwiseAbs().maxCoeff();
     const double eta = 4.0 * (m_m + 1) * eps;
     f.resize(m_m);
-    if (jacobian) jacobian->setZero(m_m, m_m);
+    if (jacobian) {
+      jacobian->setZero(m_m, m_m);
+      m_unit_row.assign(m_m, 0);
+    }
     bool pass = true;
     for (int c = 0; c < m_nc; ++c) {
       const int n = m_b * c;
@@ -74,7 +78,7 @@ public:
         pass = pass && std::abs(g) <= eta * delta(n) && ln >= -eta * scale;
       } else {
         f(n) = ln;
-        if (jacobian) (*jacobian)(n, n) = 1.0;
+        if (jacobian) (*jacobian)(n, n) = 1.0, m_unit_row[n] = 1;
         pass = pass && std::abs(ln) <= eta * scale && g >= -eta * delta(n);
       }
       // Tangential rows.
@@ -82,7 +86,7 @@ public:
         f.segment(n + 1, m_d) = lt;
         if (jacobian)
           for (int k = 0; k < m_d; ++k)
-            (*jacobian)(n + 1 + k, n + 1 + k) = 1.0;
+            (*jacobian)(n + 1 + k, n + 1 + k) = 1.0, m_unit_row[n + 1 + k] = 1;
         pass = pass && lt.norm() <= eta * scale;
       } else if (tau_norm <= rho) { // stick
         f.segment(n + 1, m_d) = rt * s;
@@ -149,6 +153,14 @@ public:
         break;
       }
       step = lu.solve(-m_s.cwiseProduct(f)).cwiseQuotient(m_s);
+      // A row of J that is a row of the identity (open normal, rho = 0
+      // tangential) says step_i = -F_i = -lambda_i exactly; the equilibrated
+      // solve returns it only to round-off, and lambda_i + step_i would then
+      // shrink by a factor eps per step towards 0 without reaching it (the
+      // stopping test |lambda_i| <= eta Lambda cannot pass when every
+      // multiplier is that remainder). Set it exactly.
+      for (int i = 0; i < m_m; ++i)
+        if (m_unit_row[i]) step(i) = -f(i);
       if (!step.allFinite()) {
         out.status = FrictionalContactStatus::singular;
         out.message = "non-finite Newton step at step " + std::to_string(it);
@@ -199,6 +211,7 @@ private:
   Eigen::VectorXd m_r;  ///< r_n per contact
   Eigen::VectorXd m_rt; ///< r_t per contact
   Eigen::VectorXd m_s;  ///< S = diag(W)^1/2 [sqrt(m/N)]
+  std::vector<char> m_unit_row; ///< rows of the last Newton matrix that are rows of I
 };
 
 } // namespace

@@ -33,6 +33,12 @@
 // identity, whatever the scale of each row of B, so that the condition
 // estimate decides singularity on a meaningful matrix; the merit function
 // of the line search is 1/2 |S F|^2 for the same reason.
+// On a row of the Newton matrix that is a row of the identity (an open
+// contact's normal row, a tangential row with rho = 0) the step is set to
+// -F_i exactly after the equilibrated solve: otherwise a multiplier whose
+// solution is 0 shrinks by a factor eps a step into the denormals and never
+// passes the relative stopping test (found at an opening contact of the
+// default case, test FrictionalContact.OpeningFromAWarmStartReachesZeroExactly).
 //
 // Why this algorithm: it treats the three states of every contact in one
 // system, so no outer loop over guessed open/stick/slip sets (which can

@@ -39,8 +39,25 @@ Eigen::SparseMatrix<double> step_matrix(const Eigen::SparseMatrix<double>& stiff
 CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
                                      const Eigen::SparseMatrix<double>& mass, double dt,
                                      const ContactLaw& law, const RayleighDamping& damping)
+    : CentralDifference(stiffness, mass, dt, &law, nullptr, damping, {}) {}
+
+CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
+                                     const Eigen::SparseMatrix<double>& mass, double dt,
+                                     const FrictionalContactLaw& law,
+                                     const RayleighDamping& damping,
+                                     const FrictionalContactSolverOptions& solver_options)
+    : CentralDifference(stiffness, mass, dt, nullptr, &law, damping, solver_options) {}
+
+CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
+                                     const Eigen::SparseMatrix<double>& mass, double dt,
+                                     const ContactLaw* law, const FrictionalContactLaw* frictional,
+                                     const RayleighDamping& damping,
+                                     const FrictionalContactSolverOptions& solver_options)
     : m_dt(dt)
     , m_law(law)
+    , m_frictional(frictional)
+    , m_solver(solver_options)
+    , m_n_tangents(frictional ? frictional->n_tangents() : 0)
     , m_damping(damping)
     , m_damped(damping.any())
     , m_mass_factor(step_matrix(stiffness, mass, dt, damping))
@@ -48,8 +65,21 @@ CentralDifference::CentralDifference(const Eigen::SparseMatrix<double>& stiffnes
     , m_k(m_mass_factor.permuted(stiffness))
     , m_m(m_mass_factor.permuted(mass))
     , m_k_rows(m_k)
-    , m_law_dofs(law.dofs_read(static_cast<int>(mass.rows())))
+    , m_law_dofs(law ? law->dofs_read(static_cast<int>(mass.rows()))
+                     : frictional->dofs_read(static_cast<int>(mass.rows())))
     , m_inverse_columns(mass.rows()) {
+  if (frictional) {
+    if (frictional->n_contacts() < 1)
+      throw std::invalid_argument("CentralDifference: the frictional contact law has " +
+                                  std::to_string(frictional->n_contacts()) +
+                                  " contacts, allowed >= 1");
+    if (m_n_tangents != 1 && m_n_tangents != 2)
+      throw std::invalid_argument("CentralDifference: the frictional contact law has " +
+                                  std::to_string(m_n_tangents) + " tangents, allowed 1 or 2");
+    const double mu = frictional->friction_coefficient();
+    if (!(mu >= 0.0 && std::isfinite(mu)))
+      throw std::invalid_argument("CentralDifference: friction coefficient must be finite and >= 0");
+  }
   for (int dof : m_law_dofs) {
     if (dof < 0 || dof >= mass.rows())
       throw std::invalid_argument("CentralDifference: the contact law reads dof " +
@@ -172,13 +202,28 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
   m_x_next = Eigen::VectorXd::Zero(n);
   m_velocity = Eigen::VectorXd::Zero(n);
   m_displacement_step = -1;
-  const int nc = m_law.n_constraints();
-  m_lambda = Eigen::VectorXd::Zero(nc);
-  m_active.assign(nc, 0);
-  m_w.resize(nc, nc);
-  m_w_step = Eigen::MatrixXi::Constant(nc, nc, -1);
-  m_law.evaluate(m_x, m_velocity, 0.0, m_state);
-  m_gap = m_state.gap;
+  if (m_frictional) {
+    const int nc = m_frictional->n_contacts();
+    const int rows = (1 + m_n_tangents) * nc;
+    m_lambda = Eigen::VectorXd::Zero(nc);
+    m_lambda_t = Eigen::VectorXd::Zero(m_n_tangents * nc);
+    m_in_play.assign(nc, 0);
+    m_classes.assign(nc, ContactClass::open);
+    m_slip_direction = Eigen::VectorXd::Zero(m_n_tangents * nc);
+    m_wf.resize(rows, rows);
+    m_wf_step = Eigen::MatrixXi::Constant(rows, rows, -1);
+    // The gaps at u_0 = 0, t = 0 (a step of zero increment).
+    m_frictional->evaluate(m_x, m_x, 0.0, m_dt, m_geometry);
+    m_gap = m_geometry.normal_gap;
+  } else {
+    const int nc = m_law->n_constraints();
+    m_lambda = Eigen::VectorXd::Zero(nc);
+    m_active.assign(nc, 0);
+    m_w.resize(nc, nc);
+    m_w_step = Eigen::MatrixXi::Constant(nc, nc, -1);
+    m_law->evaluate(m_x, m_velocity, 0.0, m_state);
+    m_gap = m_state.gap;
+  }
   m_initial_energy = energy();
   m_external_work = 0.0;
   m_contact_work = 0.0;
@@ -187,7 +232,7 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
 
 void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd& lambda,
                                          Eigen::VectorXd& correction) {
-  const int nc = m_law.n_constraints();
+  const int nc = m_law->n_constraints();
   lambda.setZero(nc);
   bool any = false;
   for (int k = 0; k < nc; ++k)
@@ -265,7 +310,7 @@ void CentralDifference::add_damping_work() {
   m_cu.swap(m_cu_next); // C'u'_{n+1}
 }
 
-StepReport CentralDifference::step() {
+void CentralDifference::predict() {
   const double dt2 = m_dt * m_dt;
   if (m_forced)
     m_predicted = m_force - m_ku;
@@ -274,9 +319,23 @@ StepReport CentralDifference::step() {
   if (m_damped) m_predicted -= (m_cu - m_cu_prev) / m_dt; // C (u_n - u_{n-1}) / dt
   apply_inverse_mass(m_predicted);                        // A^-1, A = M undamped
   m_predicted = 2.0 * m_u - m_u_prev + dt2 * m_predicted;
-  const double t_next = (m_n + 1) * m_dt;
   to_physical(m_predicted, m_x_next, m_velocity);
-  m_law.evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
+}
+
+void CentralDifference::advance() {
+  if (m_forced) m_external_work += 0.5 * (m_force.dot(m_predicted) - m_force.dot(m_u_prev));
+  m_u_prev.swap(m_u);
+  m_u.swap(m_predicted);
+  m_k_rows.multiply(m_u, m_ku);
+  if (m_damped) add_damping_work();
+  ++m_n;
+}
+
+StepReport CentralDifference::step() {
+  if (m_frictional) return step_coulomb();
+  predict();
+  const double t_next = (m_n + 1) * m_dt;
+  m_law->evaluate(m_x_next, m_velocity, t_next, m_predicted_state);
   const ContactState& s = m_predicted_state;
   solve_active_set(s, m_lambda, m_correction);
   const bool corrected = m_lambda.any();
@@ -284,30 +343,24 @@ StepReport CentralDifference::step() {
   // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = sum lambda_k D_k^T;
   // m_predicted becomes u_{n+1}.
   if (corrected) m_predicted += m_correction;
-  if (m_forced) m_external_work += 0.5 * (m_force.dot(m_predicted) - m_force.dot(m_u_prev));
   for (int k = 0; k < m_lambda.size(); ++k)
     if (m_lambda(k) != 0.0)
       m_contact_work +=
           0.5 * m_lambda(k) *
           (permuted_dot(s.direction[k], m_predicted) - permuted_dot(s.direction[k], m_u_prev));
-
-  m_u_prev.swap(m_u);
-  m_u.swap(m_predicted);
-  m_k_rows.multiply(m_u, m_ku);
-  if (m_damped) add_damping_work();
-  ++m_n;
+  advance();
 
   // Monitors at the corrected state (SPEC V5).
   // Without a correction u_{n+1} is the prediction: same gaps, same velocities.
   if (corrected) {
     to_physical(m_u, m_x_next, m_velocity);
-    m_law.evaluate(m_x_next, m_velocity, t_next, m_state);
+    m_law->evaluate(m_x_next, m_velocity, t_next, m_state);
   }
   m_x.swap(m_x_next);
   const ContactState& after = corrected ? m_state : s;
   m_gap = after.gap;
   StepReport report;
-  const double mu = m_law.friction_coefficient();
+  const double mu = m_law->friction_coefficient();
   for (int k = 0; k < m_lambda.size(); ++k) {
     report.max_penetration = std::max(report.max_penetration, -m_gap(k));
     report.min_lambda = std::min(report.min_lambda, m_lambda(k));
@@ -324,6 +377,177 @@ StepReport CentralDifference::step() {
       report.max_friction_residual = std::max(report.max_friction_residual, residual);
       if (actual != s.friction_sign(k)) ++report.sliding_reversals;
     }
+  }
+  return report;
+}
+
+void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate) {
+  const int nc = m_frictional->n_contacts();
+  const int d = m_n_tangents;
+  const int b = 1 + d;
+  const FrictionalContactGeometry& geo = m_geometry;
+  const double dt2 = m_dt * m_dt;
+  // W entries by row pair, once per step (the upper triangle, mirrored).
+  auto entry = [&](int i, int j) {
+    if (i > j) std::swap(i, j);
+    if (m_wf_step(i, j) != m_n) {
+      m_wf(i, j) = contact_flexibility(geo.rows[i], geo.rows[j]);
+      m_wf_step(i, j) = m_n;
+    }
+    return m_wf(i, j);
+  };
+  for (int iteration = 0; iteration <= nc; ++iteration) {
+    m_play.clear();
+    for (int c = 0; c < nc; ++c)
+      if (m_in_play[c]) m_play.push_back(c);
+    const int np = static_cast<int>(m_play.size());
+    const int m = b * np;
+    Eigen::MatrixXd w(m, m);
+    Eigen::VectorXd gap(np), slip(d * np), initial(m);
+    for (int a = 0; a < np; ++a) {
+      const int ca = m_play[a];
+      gap(a) = geo.normal_gap(ca);
+      slip.segment(d * a, d) = geo.slip.segment(d * ca, d);
+      initial(b * a) = m_lambda(ca);
+      initial.segment(b * a + 1, d) = m_lambda_t.segment(d * ca, d);
+      for (int p = 0; p < b; ++p)
+        for (int e = 0; e < np; ++e)
+          for (int q = 0; q < b; ++q)
+            w(b * a + p, b * e + q) = entry(b * ca + p, b * m_play[e] + q);
+    }
+    const FrictionalContactProblem problem(d, m_frictional->friction_coefficient(), w, gap, slip);
+    const FrictionalContactSolution solution = m_solver.solve(problem, initial);
+    if (!solution.ok())
+      throw IntegrationError("central differences: the frictional contact solver failed at step " +
+                             std::to_string(m_n + 1) + " (" + std::to_string(np) +
+                             " contacts in play): " + solution.message);
+    if (!solution.lambda.allFinite())
+      throw IntegrationError("central differences: non-finite contact multipliers at step " +
+                             std::to_string(m_n + 1));
+    // u_{n+1} - u~ = dt^2 A^-1 B^T lambda.
+    m_correction.setZero(m_m.rows());
+    for (int a = 0; a < np; ++a)
+      for (int p = 0; p < b; ++p) {
+        const double l = solution.lambda(b * a + p);
+        if (l == 0.0) continue;
+        for (const auto& [dof, coefficient] : geo.rows[b * m_play[a] + p]) {
+          const InverseMassColumn& column = inverse_mass_column(dof);
+          m_correction.segment(column.first, column.values.size()) +=
+              (dt2 * l * coefficient) * column.values;
+        }
+      }
+    // A contact out of play that the correction would close joins it.
+    bool added = false;
+    for (int c = 0; c < nc; ++c)
+      if (!m_in_play[c] &&
+          geo.normal_gap(c) + permuted_dot(geo.rows[b * c], m_correction) < 0.0)
+        m_in_play[c] = added = true;
+    if (added) continue;
+    m_lambda.setZero();
+    m_lambda_t.setZero();
+    for (int a = 0; a < np; ++a) {
+      m_lambda(m_play[a]) = solution.lambda(b * a);
+      m_lambda_t.segment(d * m_play[a], d) = solution.lambda.segment(b * a + 1, d);
+    }
+    certificate = certify(problem, solution.lambda);
+    // Slip directions, for the reversal count: -lambda_t / |lambda_t| (in
+    // slip lambda_t = -mu lambda_n s^, and unlike s^ it is defined when the
+    // contact holds on the cone's edge with a round-off slip).
+    for (int a = 0; a < np; ++a) {
+      const Eigen::VectorXd lt = solution.lambda.segment(b * a + 1, d);
+      const double norm = lt.norm();
+      if (certificate.classes[a] == ContactClass::slip && norm > 0.0) {
+        const int c = m_play[a];
+        const Eigen::VectorXd direction = -lt / norm;
+        // m_slip_direction still holds the previous step's direction here.
+        if (m_classes[c] == ContactClass::slip &&
+            direction.dot(m_slip_direction.segment(d * c, d)) < 0.0)
+          m_reversals_this_step++;
+        m_slip_direction.segment(d * c, d) = direction;
+      }
+    }
+    return;
+  }
+  throw IntegrationError("central differences: the set of contacts in play did not settle at step " +
+                         std::to_string(m_n + 1));
+}
+
+StepReport CentralDifference::step_coulomb() {
+  predict();
+  const double t_next = (m_n + 1) * m_dt;
+  const int nc = m_frictional->n_contacts();
+  const int d = m_n_tangents;
+  const int b = 1 + d;
+  m_frictional->evaluate(m_x, m_x_next, t_next, m_dt, m_geometry);
+  const FrictionalContactGeometry& geo = m_geometry;
+  if (!geo.normal_gap.allFinite() || !geo.slip.allFinite())
+    throw IntegrationError("central differences: non-finite predicted gap or slip at step " +
+                           std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
+                           " s): the state blew up");
+  bool any = false;
+  for (int c = 0; c < nc; ++c) {
+    m_in_play[c] = geo.normal_gap(c) < 0.0 || m_lambda(c) != 0.0 ||
+                   m_lambda_t.segment(d * c, d).any();
+    any |= m_in_play[c] != 0;
+  }
+  FrictionalContactCertificate certificate;
+  m_reversals_this_step = 0;
+  if (any) {
+    solve_coulomb(certificate);
+  } else {
+    m_lambda.setZero();
+    m_lambda_t.setZero();
+    m_play.clear();
+  }
+  const bool corrected = m_lambda.any() || m_lambda_t.any();
+
+  // Works of step n: (F_n + R_n)^T (u_{n+1} - u_{n-1}) / 2, R_n = B^T lambda
+  // over every row; m_predicted becomes u_{n+1}.
+  if (corrected) {
+    m_predicted += m_correction;
+    for (int c : m_play)
+      for (int p = 0; p < b; ++p) {
+        const double l = p == 0 ? m_lambda(c) : m_lambda_t(d * c + p - 1);
+        if (l == 0.0) continue;
+        const SparseRow& row = geo.rows[b * c + p];
+        m_contact_work +=
+            0.5 * l * (permuted_dot(row, m_predicted) - permuted_dot(row, m_u_prev));
+      }
+  }
+  advance();
+
+  // Monitors at the corrected state: the law at (u_n, u_{n+1}) (m_x is still
+  // u_n on the law's dofs); without a correction u_{n+1} is the prediction.
+  if (corrected) {
+    to_physical(m_u, m_x_next, m_velocity);
+    m_frictional->evaluate(m_x, m_x_next, t_next, m_dt, m_geometry_after);
+    m_gap = m_geometry_after.normal_gap;
+  } else {
+    m_gap = geo.normal_gap;
+  }
+  m_x.swap(m_x_next);
+
+  StepReport report;
+  report.sliding_reversals = m_reversals_this_step;
+  std::vector<ContactClass> classes(nc, ContactClass::open);
+  for (size_t a = 0; a < m_play.size(); ++a)
+    classes[m_play[a]] = certificate.classes[a];
+  for (int c = 0; c < nc; ++c) {
+    report.max_penetration = std::max(report.max_penetration, -m_gap(c));
+    report.min_lambda = std::min(report.min_lambda, m_lambda(c));
+    report.max_complementarity =
+        std::max(report.max_complementarity, std::abs(m_lambda(c) * m_gap(c)));
+    if (m_lambda(c) > 0.0) ++report.n_active;
+    if (classes[c] != m_classes[c]) ++report.stick_slip_transitions;
+  }
+  m_classes.swap(classes);
+  if (!m_play.empty()) {
+    report.max_cone_violation = certificate.max_cone_violation;
+    report.max_stick_slip_residual =
+        std::max(certificate.stick_residual, certificate.slip_residual);
+    report.max_friction_residual = certificate.max_slip_residual;
+    report.n_stick = certificate.n_stick;
+    report.n_slip = certificate.n_slip;
   }
   return report;
 }

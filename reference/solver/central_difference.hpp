@@ -57,6 +57,35 @@
 // the contiguous block of the permuted order where it is nonzero. The energy
 // costs a product with M, so it is computed when asked (the works are summed
 // at every step).
+//
+// Coulomb friction with stick and slip (issue 12 item 2; the case's
+// friction_law "coulomb"): constructed with a FrictionalContactLaw in place
+// of a ContactLaw, the contact step is the per-step problem of
+// frictional_contact_problem.hpp:
+//   law.evaluate(u_n, u~, t_{n+1}, dt) -> g~, s~ (the forward tangential
+//       increment over the step), rows B (per contact n, t1 [, t2]);
+//   if every g~_c >= 0 and the previous lambda is zero: lambda = 0 (no
+//       contact can close; the solver is not called);
+//   else on the contacts in play P = {c : g~_c < 0 or lambda_c of the
+//       previous step != 0}: W = dt^2 B_P A^-1 B_P^T (upper triangle from the
+//       cached columns of A^-1, mirrored: exactly symmetric), solve
+//       [g; s] = [g~; s~] + W lambda with FrictionalContactSolver warm
+//       started from the previous lambda (IntegrationError with the step and
+//       the solver's message if it fails); a contact outside P that the
+//       correction would close (g~_c + G_c du < 0) joins P and the problem is
+//       solved again (outside P lambda_c = 0, exactly the open state, so the
+//       problem on P with every other g >= 0 is the whole problem);
+//   u_{n+1} = u~ + dt^2 A^-1 B^T lambda, R_n = B^T lambda (every row enters
+//   the contact work, as above), and the StepReport carries certify()'s
+//   residuals: max_cone_violation [N] raw, max_stick_slip_residual the
+//   larger of the scaled stick and slip residuals, stick_slip_transitions
+//   the contacts whose class (open, stick, slip) changed since the previous
+//   step, n_stick, n_slip; max_friction_residual the raw slip residual
+//   |lambda_t + mu lambda_n s/|s|| [N]; sliding_reversals counts contacts
+//   slipping at both steps whose slip direction -lambda_t/|lambda_t| turned
+//   by more than 90 degrees.
+// The ContactLaw path ("sliding_sign") is not touched by any of this: the
+// same operations in the same order as before.
 
 #include <stdexcept>
 #include <vector>
@@ -67,6 +96,9 @@
 
 #include "case_file.hpp"
 #include "contact_law.hpp"
+#include "frictional_contact_law.hpp"
+#include "frictional_contact_problem.hpp"
+#include "frictional_contact_solver.hpp"
 #include "history.hpp"
 #include "mass_factor.hpp"
 #include "sparse_rows.hpp"
@@ -89,6 +121,14 @@ public:
   CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
                     const Eigen::SparseMatrix<double>& mass, double dt, const ContactLaw& law,
                     const RayleighDamping& damping = RayleighDamping{});
+  /// The same with Coulomb friction with stick and slip (the class comment):
+  /// `law` must outlive the integrator (not owned); solver_options for the
+  /// per-step FrictionalContactSolver. Throws as above.
+  CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
+                    const Eigen::SparseMatrix<double>& mass, double dt,
+                    const FrictionalContactLaw& law,
+                    const RayleighDamping& damping = RayleighDamping{},
+                    const FrictionalContactSolverOptions& solver_options = {});
 
   /// Start from rest under the force f0 at t = 0.
   void start(const Eigen::Ref<const Eigen::VectorXd>& f0);
@@ -103,8 +143,16 @@ public:
   /// u_n in physical order, gathered from the state when asked (n loads);
   /// valid until the next step() or start().
   const Eigen::VectorXd& displacement() const;
-  const Eigen::VectorXd& lambda() const { return m_lambda; } ///< multipliers of the last step [N]
-  const Eigen::VectorXd& gap() const { return m_gap; }       ///< gaps at u_n
+  /// Normal multipliers of the last step, one per constraint (contact) [N].
+  const Eigen::VectorXd& lambda() const { return m_lambda; }
+  /// Coulomb law: tangential multipliers of the last step, n_tangents() per
+  /// contact (t1 [, t2]) [N]; empty for a ContactLaw.
+  const Eigen::VectorXd& lambda_tangential() const { return m_lambda_t; }
+  /// d of the FrictionalContactLaw (1 or 2); 0 for a ContactLaw.
+  int n_tangents() const { return m_n_tangents; }
+  /// Coulomb law: each contact's class after the last step (all open at start).
+  const std::vector<ContactClass>& contact_classes() const { return m_classes; }
+  const Eigen::VectorXd& gap() const { return m_gap; } ///< gaps at u_n
   double energy() const; ///< E_{n-1/2} [J], computed from its definition
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
@@ -119,6 +167,10 @@ public:
   double flops_per_step() const;
 
 private:
+  CentralDifference(const Eigen::SparseMatrix<double>& stiffness,
+                    const Eigen::SparseMatrix<double>& mass, double dt, const ContactLaw* law,
+                    const FrictionalContactLaw* frictional, const RayleighDamping& damping,
+                    const FrictionalContactSolverOptions& solver_options);
   /// The nonzero block of a column of M'^-1: entries first .. first + size - 1.
   struct InverseMassColumn {
     Eigen::Index first = 0;
@@ -146,9 +198,24 @@ private:
   /// predicted state, by the active-set iteration of the class comment.
   void solve_active_set(const ContactState& predicted, Eigen::VectorXd& lambda,
                         Eigen::VectorXd& correction);
+  /// m_predicted <- u~' (permuted) and, on the law's dofs, m_x_next <- u~.
+  void predict();
+  /// m_predicted = u'_{n+1}: the external work of the step, then the state
+  /// moves to n + 1 (K'u', damping work).
+  void advance();
+  /// step() with the FrictionalContactLaw (class comment).
+  StepReport step_coulomb();
+  /// The multipliers of the step on the contacts in play (m_in_play),
+  /// written to m_lambda, m_lambda_t; the correction into m_correction; the
+  /// certificate of the problem solved into `certificate` (classes of the
+  /// contacts in play, in m_play order).
+  void solve_coulomb(FrictionalContactCertificate& certificate);
 
   double m_dt;
-  const ContactLaw& m_law;
+  const ContactLaw* m_law;                   ///< sliding_sign path (or nullptr)
+  const FrictionalContactLaw* m_frictional;  ///< Coulomb path (or nullptr)
+  FrictionalContactSolver m_solver;
+  int m_n_tangents = 0;
   RayleighDamping m_damping;
   bool m_damped;                     ///< alpha or beta > 0
   MassFactor m_mass_factor;          ///< of A = M + dt/2 C (M undamped)
@@ -198,6 +265,17 @@ private:
   ContactState m_state; ///< at u_n
   Eigen::VectorXd m_lambda;
   Eigen::VectorXd m_gap;
+  // Coulomb storage (FrictionalContactLaw only).
+  FrictionalContactGeometry m_geometry;       ///< of the prediction
+  FrictionalContactGeometry m_geometry_after; ///< at u_{n+1}
+  Eigen::VectorXd m_lambda_t;                 ///< d per contact [N]
+  std::vector<char> m_in_play;                ///< per contact
+  std::vector<int> m_play;                    ///< the contacts in play, ascending
+  Eigen::MatrixXd m_wf;                       ///< W entries by row pair, cached per step
+  Eigen::MatrixXi m_wf_step;                  ///< the step m_wf(i, j) was computed for
+  std::vector<ContactClass> m_classes;        ///< after the last step
+  Eigen::VectorXd m_slip_direction;           ///< -lambda_t/|lambda_t| of the last slip step, d per contact
+  int m_reversals_this_step = 0;
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;

@@ -44,6 +44,11 @@ struct HistoryRow {
   double external_work = 0.0;    ///< W_ext up to step n-1 [J]
   double contact_work = 0.0;     ///< W_contact up to step n-1 [J]
   double damping_work = 0.0;     ///< W_damp up to step n-1, >= 0 [J] (0 undamped)
+  /// Coulomb law only (friction_law "coulomb"): the tangential multipliers
+  /// lambda_t of the step that produced u_n, d per contact in contact order
+  /// (t1 [, t2]; d = 1 in 2D, 2 in 3D) [N]; nullptr for the sliding_sign law
+  /// (history.csv then has no lambda_t columns).
+  const Eigen::VectorXd* lambda_tangential = nullptr;
 };
 
 /// Receives each history row as it is produced, in order (streamed output).
@@ -58,6 +63,9 @@ struct History {
   std::vector<double> external_work;   ///< W_ext up to step n-1 [J]
   std::vector<double> contact_work;    ///< W_contact up to step n-1 [J]
   std::vector<double> damping_work;    ///< W_damp up to step n-1 [J]
+  /// lambda_t of each row (HistoryRow::lambda_tangential); empty unless the
+  /// rows carry it (Coulomb law).
+  std::vector<Eigen::VectorXd> lambda_tangential;
 
   int n_rows() const { return static_cast<int>(time.size()); }
 
@@ -70,6 +78,7 @@ struct History {
     external_work.push_back(row.external_work);
     contact_work.push_back(row.contact_work);
     damping_work.push_back(row.damping_work);
+    if (row.lambda_tangential) lambda_tangential.push_back(*row.lambda_tangential);
   }
 };
 

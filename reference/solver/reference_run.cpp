@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "assembler.hpp"
@@ -11,6 +12,7 @@
 #include "central_difference.hpp"
 #include "modal_analysis.hpp"
 #include "tip_casing_contact.hpp"
+#include "tip_ring_frictional_contact.hpp"
 
 namespace rsi {
 namespace {} // namespace
@@ -32,10 +34,22 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
                   std::max(omega_bladed_disk, max_angular_frequency(casing.stiffness, casing.mass)),
                   options.force, s);
 
-  const TipCasingContact law(bd, casing, c);
-  // Rayleigh damping of both parts; with central damping (central_difference.hpp)
-  // the stable step is 2/omega_max for any alpha, beta >= 0: the check above stands.
-  CentralDifference cd(k, m, c.time.step, law, c.damping.rayleigh);
+  // The friction law of the case: sliding_sign (the first round's, the
+  // golden history's) or Coulomb with stick and slip. Rayleigh damping of
+  // both parts; with central damping (central_difference.hpp) the stable
+  // step is 2/omega_max for any alpha, beta >= 0: the check above stands.
+  const bool coulomb = c.operating_point.friction_law == FrictionLaw::coulomb;
+  std::optional<TipCasingContact> sliding_sign_law;
+  std::optional<TipRingFrictionalContact> coulomb_law;
+  std::optional<CentralDifference> integrator;
+  if (coulomb) {
+    coulomb_law.emplace(bd, casing, c);
+    integrator.emplace(k, m, c.time.step, *coulomb_law, c.damping.rayleigh);
+  } else {
+    sliding_sign_law.emplace(bd, casing, c);
+    integrator.emplace(k, m, c.time.step, *sliding_sign_law, c.damping.rayleigh);
+  }
+  CentralDifference& cd = *integrator;
   s.flops_per_step = cd.flops_per_step();
   Eigen::VectorXd forcing = Eigen::VectorXd::Zero(k.rows());
   forcing.tail(casing.n_dofs()) = casing_forcing(casing, c.forcing);
@@ -55,7 +69,8 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
         cd.contact_work(),
         with_casing ? Eigen::Ref<const Eigen::VectorXd>(cd.displacement().tail(casing.n_dofs()))
                     : Eigen::Ref<const Eigen::VectorXd>(not_needed),
-        cd.damping_work()};
+        cd.damping_work(),
+        coulomb ? &cd.lambda_tangential() : nullptr};
   };
   const Clock::time_point integration_start = Clock::now();
   bool forced = forcing_active(c.forcing, 0.0, s.dt);

@@ -36,8 +36,9 @@ RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& op
 }
 
 void RunMonitor::add_row(const StepState& state, double energy) {
-  const HistoryRow row{state.time,          state.gap,          state.lambda,      energy,
-                       state.external_work, state.contact_work, state.damping_work};
+  const HistoryRow row{state.time,          state.gap,          state.lambda,
+                       energy,              state.external_work, state.contact_work,
+                       state.damping_work,  state.lambda_tangential};
   if (m_options.history_sink)
     m_options.history_sink(row);
   else

@@ -69,6 +69,9 @@ struct StepState {
   /// so, and may be empty otherwise.
   Eigen::Ref<const Eigen::VectorXd> casing;
   double damping_work = 0.0; ///< W_damp (0 undamped)
+  /// Coulomb law only: lambda_t of the step, d per contact (t1 [, t2]) [N];
+  /// nullptr otherwise (then the history rows carry none).
+  const Eigen::VectorXd* lambda_tangential = nullptr;
 };
 
 /// Throws StabilityError unless dt < 2 / omega_max or forced; fills the
