@@ -92,7 +92,9 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     const std::string dir = options.out + "/runs/" + run_name(r.run);
     directories.make(dir, "--out");
     r.history = std::make_unique<StreamedTextFile>(dir + "/history.csv");
-    r.history->append(history_csv_header(c.bladed_disk.n_blades));
+    // The 2D Coulomb law adds one tangential multiplier a tip (run_outputs.hpp).
+    const int n_tangents = c.operating_point.friction_law == FrictionLaw::coulomb ? 1 : 0;
+    r.history->append(history_csv_header(c.bladed_disk.n_blades, n_tangents));
   }
   auto worker = [&]() {
     for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {

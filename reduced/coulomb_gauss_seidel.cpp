@@ -48,8 +48,16 @@ void CoulombGaussSeidel::prepare(const Eigen::Ref<const Eigen::MatrixXd>& w, int
                                  double diagonal) {
   const int b = 1 + m_d;
   const int o = b * c;
+  // W_cc equal to the bit to the one a previous solve prepared (a constant
+  // W: the component integrator's, every step): its regularity and LU are
+  // those already there. Comparing 9 numbers costs nothing against the SVD.
+  if (m_mu != 0.0 && m_cached[c] && m_block[c].topLeftCorner(b, b) == w.block(o, o, b, b)) {
+    m_prepared[c] = 1;
+    return;
+  }
   m_block[c].setZero();
   m_block[c].topLeftCorner(b, b) = w.block(o, o, b, b);
+  m_cached[c] = m_mu != 0.0;
   if (m_mu == 0.0) {
     m_regularity[c] = diagonal > 0.0 ? w(o, o) / diagonal : 0.0;
   } else {
@@ -87,6 +95,7 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
   // Per contact, prepared when it first closes (most stay open): the block,
   // its regularity and (mu > 0) its LU factors.
   m_state.assign(nc, ReducedContactState::open);
+  if (static_cast<int>(m_block.size()) != nc) m_cached.assign(nc, 0); // kept while nc is
   m_block.resize(nc);
   m_lu.resize(nc);
   m_regularity.resize(nc);

@@ -152,6 +152,7 @@ private:
   std::vector<Eigen::Matrix3d> m_block;                      ///< W_cc, leading (1+d) square
   std::vector<Eigen::PartialPivLU<CoulombBlockMatrix>> m_lu; ///< LU of W_cc where regular (mu > 0)
   std::vector<char> m_prepared;     ///< contact c's block, regularity, LU are set
+  std::vector<char> m_cached;       ///< m_block[c], its regularity and LU kept from an earlier solve (mu > 0)
   std::vector<double> m_regularity; ///< sigma_min/sigma_max (mu > 0) or w_nn/max W_ii (mu = 0)
   Eigen::VectorXd m_y;              ///< [g; s] of the current iterate
 };

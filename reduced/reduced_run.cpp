@@ -57,10 +57,20 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
 
   RunMonitor monitor(c, casing, options.run, result);
   std::vector<Eigen::VectorXd> field;
+  const bool coulomb = c.operating_point.friction_law == FrictionLaw::coulomb;
   auto state = [&]() {
-    return StepState{integrator.step_index(), integrator.time(),          integrator.gap(),
-                     integrator.lambda(),     integrator.external_work(), integrator.contact_work(),
-                     integrator.casing(),     integrator.damping_work()};
+    // The tangential multipliers (one a tip) go to history.csv with the
+    // Coulomb law only, as in the reference run: sliding_sign histories keep
+    // their columns.
+    return StepState{integrator.step_index(),
+                     integrator.time(),
+                     integrator.gap(),
+                     integrator.lambda(),
+                     integrator.external_work(),
+                     integrator.contact_work(),
+                     integrator.casing(),
+                     integrator.damping_work(),
+                     coulomb ? &integrator.tangential_lambda() : nullptr};
   };
   Eigen::VectorXd u(bd.n_dofs());
   auto record_field = [&]() {
