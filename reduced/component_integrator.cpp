@@ -7,17 +7,12 @@
 #include <string>
 
 #include "critical_step.hpp"
+#include "message_number.hpp"
 #include "reduced_coulomb_certificate.hpp"
 
 namespace rsi {
-namespace {
 
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+namespace {
 
 const std::string kWhere = "ComponentIntegrator: ";
 
@@ -44,7 +39,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     : m_casing(casing)
     , m_solver(2, options.mu, options.coulomb) {
   if (!(options.dt > 0.0) || !std::isfinite(options.dt))
-    throw std::invalid_argument(kWhere + "dt = " + number(options.dt) +
+    throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
                                 ", allowed a finite value > 0");
   m_dt = options.dt;
   m_mu = options.mu;
@@ -92,13 +87,13 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
   m_omega_max = reduced_omega_max(basis);
   if (!(m_omega_max > 0.0) || !std::isfinite(m_omega_max))
     throw ComponentIntegrationError(kWhere + "omega_max of the reduced model is " +
-                                    number(m_omega_max) + ", allowed a finite value > 0");
+                                    message_number(m_omega_max) + ", allowed a finite value > 0");
   if (m_dt >= critical_dt() && !options.force_step)
     throw ComponentIntegrationError(
-        kWhere + "dt = " + number(m_dt) +
-        " s is at or above the critical step 2/omega_max = " + number(critical_dt()) +
-        " s of the " + basis.method + " model (omega_max = " + number(m_omega_max) + " rad/s" +
-        (m_massless ? ", massless boundary condensed" : "") +
+        kWhere + "dt = " + message_number(m_dt) +
+        " s is at or above the critical step 2/omega_max = " + message_number(critical_dt()) +
+        " s of the " + basis.method + " model (omega_max = " + message_number(m_omega_max) +
+        " rad/s" + (m_massless ? ", massless boundary condensed" : "") +
         "); allowed dt < critical step unless forced");
 
   if (!m_massless) {
@@ -233,7 +228,7 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
       m_sweeps += r.sweeps;
       if (!r.converged())
         throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n + 1) +
-                                        " (t = " + number((m_n + 1) * m_dt) +
+                                        " (t = " + message_number((m_n + 1) * m_dt) +
                                         " s): contact solve failed: " + r.message);
       m_lambda_next.setZero();
       m_state.assign(m_nc, ReducedContactState::open);
@@ -371,8 +366,9 @@ StepReport ComponentIntegrator::step() {
   }
   ++m_n;
   if (!m_x.allFinite() || !m_gap.allFinite())
-    throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n) + " (t = " +
-                                    number(time()) + " s): the state is not finite (blow-up)");
+    throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n) +
+                                    " (t = " + message_number(time()) +
+                                    " s): the state is not finite (blow-up)");
   return report;
 }
 

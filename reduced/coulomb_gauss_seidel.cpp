@@ -8,17 +8,9 @@
 
 #include <Eigen/SVD>
 
+#include "message_number.hpp"
+
 namespace rsi {
-namespace {
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
-} // namespace
 
 CoulombGaussSeidel::CoulombGaussSeidel(int d, double mu, const CoulombGaussSeidelOptions& options)
     : m_d(d)
@@ -29,19 +21,20 @@ CoulombGaussSeidel::CoulombGaussSeidel(int d, double mu, const CoulombGaussSeide
     throw std::invalid_argument(where + "d (tangential directions) = " + std::to_string(d) +
                                 ", allowed 1 or 2");
   if (!(mu >= 0.0) || !std::isfinite(mu))
-    throw std::invalid_argument(where + "mu = " + number(mu) + ", allowed a finite value >= 0");
+    throw std::invalid_argument(where + "mu = " + message_number(mu) +
+                                ", allowed a finite value >= 0");
   if (options.max_sweeps < 1)
     throw std::invalid_argument(where + "max_sweeps = " + std::to_string(options.max_sweeps) +
                                 ", allowed >= 1");
   if (!(options.relative_change >= 0.0 && options.relative_change < 1.0))
-    throw std::invalid_argument(where + "relative_change = " + number(options.relative_change) +
-                                ", allowed [0, 1)");
+    throw std::invalid_argument(where + "relative_change = " +
+                                message_number(options.relative_change) + ", allowed [0, 1)");
   if (!(options.singular_tolerance > 0.0 && options.singular_tolerance < 1.0))
-    throw std::invalid_argument(
-        where + "singular_tolerance = " + number(options.singular_tolerance) + ", allowed (0, 1)");
+    throw std::invalid_argument(where + "singular_tolerance = " +
+                                message_number(options.singular_tolerance) + ", allowed (0, 1)");
   if (!(options.local_violation > 0.0 && options.local_violation < 1.0))
-    throw std::invalid_argument(where + "local_violation = " + number(options.local_violation) +
-                                ", allowed (0, 1)");
+    throw std::invalid_argument(where + "local_violation = " +
+                                message_number(options.local_violation) + ", allowed (0, 1)");
 }
 
 void CoulombGaussSeidel::prepare(const Eigen::Ref<const Eigen::MatrixXd>& w, int c,
@@ -124,11 +117,12 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         report.status = CoulombSweepStatus::singular_block;
         report.sweeps = sweep;
         report.failed_contact = c;
-        report.message = where + "contact " + std::to_string(c) + " closes (r_n = " + number(r(0)) +
+        report.message = where + "contact " + std::to_string(c) +
+                         " closes (r_n = " + message_number(r(0)) +
                          " m) but its block W_cc is singular (" +
                          (m_mu == 0.0 ? "w_nn / max W_ii = " : "sigma_min / sigma_max = ") +
-                         number(m_regularity[c]) + ", allowed > " +
-                         number(m_options.singular_tolerance) + ")";
+                         message_number(m_regularity[c]) + ", allowed > " +
+                         message_number(m_options.singular_tolerance) + ")";
         return report;
       }
       const LocalCoulombSolution local =
@@ -140,9 +134,9 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         report.failed_contact = c;
         report.message = where + "contact " + std::to_string(c) +
                          ": no local solution (best candidate, " + to_string(local.state) +
-                         ", violates the law by " + number(local.violation) +
-                         " relative; allowed " + number(m_options.local_violation) + ") at sweep " +
-                         std::to_string(sweep) + ", mu = " + number(m_mu);
+                         ", violates the law by " + message_number(local.violation) +
+                         " relative; allowed " + message_number(m_options.local_violation) +
+                         ") at sweep " + std::to_string(sweep) + ", mu = " + message_number(m_mu);
         return report;
       }
       const Eigen::Vector3d delta = local.lambda - current;
@@ -162,9 +156,10 @@ CoulombGaussSeidel::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
   }
   report.status = CoulombSweepStatus::max_sweeps;
   report.message = where + "no convergence in " + std::to_string(m_options.max_sweeps) +
-                   " sweeps (last change " + number(report.last_change) + " N for |lambda| " +
-                   number(report.size) + " N, allowed " + number(m_options.relative_change) +
-                   " relative), mu = " + number(m_mu);
+                   " sweeps (last change " + message_number(report.last_change) +
+                   " N for |lambda| " + message_number(report.size) + " N, allowed " +
+                   message_number(m_options.relative_change) +
+                   " relative), mu = " + message_number(m_mu);
   return report;
 }
 

@@ -9,17 +9,9 @@
 
 #include <Eigen/Geometry>
 
+#include "message_number.hpp"
+
 namespace rsi {
-namespace {
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
-} // namespace
 
 RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                          const std::vector<std::array<int, 3>>& boundary_index,
@@ -32,15 +24,18 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                                 ") and boundary_index (" + std::to_string(boundary_index.size()) +
                                 ") must have one entry per contact node");
   if (!std::isfinite(omega))
-    throw std::invalid_argument(where + "omega = " + number(omega) + ", allowed a finite value");
+    throw std::invalid_argument(where + "omega = " + message_number(omega) +
+                                ", allowed a finite value");
   if (!std::isfinite(gap.g0))
-    throw std::invalid_argument(where + "gap g0 = " + number(gap.g0) + ", allowed finite");
+    throw std::invalid_argument(where + "gap g0 = " + message_number(gap.g0) + ", allowed finite");
   if (gap.kind == CasingGapKind::linear && !std::isfinite(gap.rate))
-    throw std::invalid_argument(where + "gap rate = " + number(gap.rate) + ", allowed finite");
+    throw std::invalid_argument(where + "gap rate = " + message_number(gap.rate) +
+                                ", allowed finite");
   if (gap.kind == CasingGapKind::oval && !(gap.g0 > 0.0))
-    throw std::invalid_argument(where + "oval gap g_m = " + number(gap.g0) + ", allowed > 0");
+    throw std::invalid_argument(where + "oval gap g_m = " + message_number(gap.g0) +
+                                ", allowed > 0");
   if (gap.kind == CasingGapKind::oval && !(gap.width > 0.0 && gap.width < 1.0))
-    throw std::invalid_argument(where + "oval gap width = " + number(gap.width) +
+    throw std::invalid_argument(where + "oval gap width = " + message_number(gap.width) +
                                 ", allowed (0, 1)");
   std::set<int> seen;
   for (size_t c = 0; c < positions.size(); ++c) {
@@ -48,8 +43,8 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
     const double r = std::hypot(x(0), x(1));
     if (!x.allFinite() || !(r > 0.0))
       throw std::invalid_argument(where + "contact node " + std::to_string(c) +
-                                  " lies on the rotation axis or is not finite (r = " + number(r) +
-                                  "), allowed r > 0");
+                                  " lies on the rotation axis or is not finite (r = " +
+                                  message_number(r) + "), allowed r > 0");
     for (int k : boundary_index[c])
       if (k < 0 || !seen.insert(k).second)
         throw std::invalid_argument(where + "contact node " + std::to_string(c) +
