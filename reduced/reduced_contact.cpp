@@ -1,6 +1,7 @@
 #include "reduced_contact.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "ring_element.hpp"
 
@@ -33,6 +34,17 @@ void ReducedTipContact::evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd
     tip.q_u = m_q_u[k];
     tip.q_v = m_q_v[k];
     const double turns = (m_alpha0[k] + m_omega * t + q(tip.q_v) / m_tip_radius) / (2.0 * M_PI);
+    if (!std::isfinite(turns)) {
+      // A non-finite state has no contact point on the casing (its element
+      // index would be garbage): the tip reports a non-finite gap and slip,
+      // which the integrator refuses with the step number.
+      tip.gap = tip.sliding = tip.slip = std::numeric_limits<double>::quiet_NaN();
+      tip.sign = 0.0;
+      tip.c_u.fill(-1);
+      tip.c_v.fill(-1);
+      tip.shape.fill(0.0);
+      continue;
+    }
     const double position = (turns - std::floor(turns)) * n_nodes; // in [0, n_nodes)
     const int element = std::min(static_cast<int>(position), n_nodes - 1);
     const Eigen::Vector4d n = hermite_values(position - element, m_casing_radius * pitch);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -53,6 +54,15 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
     const int iu = m_tip_radial[k];
     const int iv = m_tip_tangential[k];
     double alpha = std::fmod(m_tip_angle0[k] + m_omega * t + x(iv) / m_tip_radius, 2.0 * M_PI);
+    if (!std::isfinite(alpha)) {
+      // A non-finite state faces no casing element (the index would be
+      // garbage): a non-finite gap, which the run monitor reports as a blow-up.
+      s.gap(k) = s.sliding_velocity(k) = std::numeric_limits<double>::quiet_NaN();
+      s.friction_sign(k) = 0.0;
+      s.gradient[k].clear();
+      s.direction[k].clear();
+      continue;
+    }
     if (alpha < 0.0) alpha += 2.0 * M_PI;
     int element = static_cast<int>(std::floor(alpha / pitch));
     double xi = alpha / pitch - element;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -66,6 +67,14 @@ void TipRingFrictionalContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
     // The casing point the tip faces, as TipCasingContact::evaluate.
     double alpha =
         std::fmod(m_tip_angle0[k] + m_omega * t_next + predicted(iv) / m_tip_radius, 2.0 * M_PI);
+    if (!std::isfinite(alpha)) {
+      // A non-finite state faces no casing element (the index would be
+      // garbage): non-finite g~ and s~, which the integrator refuses with the step.
+      out.normal_gap(k) = out.slip(k) = std::numeric_limits<double>::quiet_NaN();
+      out.rows[2 * k].clear();
+      out.rows[2 * k + 1].clear();
+      continue;
+    }
     if (alpha < 0.0) alpha += 2.0 * M_PI;
     int element = static_cast<int>(std::floor(alpha / pitch));
     double xi = alpha / pitch - element;
