@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ring_element.hpp"
+#include "casing_point.hpp"
 
 namespace rsi {
 
@@ -43,8 +43,6 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
                                 const Eigen::Ref<const Eigen::VectorXd>& v, double t,
                                 ContactState& s) const {
   const int nc = n_constraints();
-  const double pitch = 2.0 * M_PI / m_casing_elements;
-  const double arc = m_casing_radius * pitch;
   s.gap.resize(nc);
   s.sliding_velocity.resize(nc);
   s.friction_sign.resize(nc);
@@ -53,7 +51,7 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
   for (int k = 0; k < nc; ++k) {
     const int iu = m_tip_radial[k];
     const int iv = m_tip_tangential[k];
-    double alpha = std::fmod(m_tip_angle0[k] + m_omega * t + x(iv) / m_tip_radius, 2.0 * M_PI);
+    const double alpha = m_tip_angle0[k] + m_omega * t + x(iv) / m_tip_radius;
     if (!std::isfinite(alpha)) {
       // A non-finite state faces no casing element (the index would be
       // garbage): a non-finite gap, which the run monitor reports as a blow-up.
@@ -63,24 +61,11 @@ void TipCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& x,
       s.direction[k].clear();
       continue;
     }
-    if (alpha < 0.0) alpha += 2.0 * M_PI;
-    int element = static_cast<int>(std::floor(alpha / pitch));
-    double xi = alpha / pitch - element;
-    if (element >= m_casing_elements) { // alpha within round-off of 2 pi
-      element = m_casing_elements - 1;
-      xi = 1.0;
-    }
-    const Eigen::Vector4d n = hermite_values(xi, arc);
-    // The element's unclamped nodes (a node past the last is node 0).
-    int first[2];
-    int n_nodes = 0;
-    int shape_offset[2];
-    for (int node = 0; node < 2; ++node) {
-      const int j = element + node == m_casing_elements ? 0 : element + node;
-      if (m_casing_node_dof[j] < 0) continue; // the clamped node: zero displacement
-      first[n_nodes] = m_casing_node_dof[j];
-      shape_offset[n_nodes++] = 2 * node;
-    }
+    const CasingPoint p = casing_point(alpha, m_casing_elements, m_casing_radius, m_casing_node_dof);
+    const Eigen::Vector4d& n = p.shape;
+    const int n_nodes = p.n_nodes;
+    const int* first = p.first;
+    const int* shape_offset = p.shape_offset;
     double u_casing = 0.0;
     double v_casing_rate = 0.0;
     for (int a = 0; a < n_nodes; ++a)

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "ring_element.hpp"
+#include "casing_point.hpp"
 
 namespace rsi {
 
@@ -53,8 +53,6 @@ void TipRingFrictionalContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
   if (!(std::isfinite(dt) && dt > 0.0))
     throw std::invalid_argument(where + "dt must be in (0, inf)");
   const int nc = n_contacts();
-  const double pitch = 2.0 * M_PI / m_casing_elements;
-  const double arc = m_casing_radius * pitch;
   out.normal_gap.resize(nc);
   out.slip.resize(nc);
   out.rows.resize(2 * nc);
@@ -65,8 +63,7 @@ void TipRingFrictionalContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
       throw std::invalid_argument(where + "tip dof outside vectors of " +
                                   std::to_string(predicted.size()) + " entries");
     // The casing point the tip faces, as TipCasingContact::evaluate.
-    double alpha =
-        std::fmod(m_tip_angle0[k] + m_omega * t_next + predicted(iv) / m_tip_radius, 2.0 * M_PI);
+    const double alpha = m_tip_angle0[k] + m_omega * t_next + predicted(iv) / m_tip_radius;
     if (!std::isfinite(alpha)) {
       // A non-finite state faces no casing element (the index would be
       // garbage): non-finite g~ and s~, which the integrator refuses with the step.
@@ -75,23 +72,11 @@ void TipRingFrictionalContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>&
       out.rows[2 * k + 1].clear();
       continue;
     }
-    if (alpha < 0.0) alpha += 2.0 * M_PI;
-    int element = static_cast<int>(std::floor(alpha / pitch));
-    double xi = alpha / pitch - element;
-    if (element >= m_casing_elements) { // alpha within round-off of 2 pi
-      element = m_casing_elements - 1;
-      xi = 1.0;
-    }
-    const Eigen::Vector4d n = hermite_values(xi, arc);
-    int first[2];
-    int n_nodes = 0;
-    int shape_offset[2];
-    for (int node = 0; node < 2; ++node) {
-      const int j = element + node == m_casing_elements ? 0 : element + node;
-      if (m_casing_node_dof[j] < 0) continue; // the clamped node: zero displacement
-      first[n_nodes] = m_casing_node_dof[j];
-      shape_offset[n_nodes++] = 2 * node;
-    }
+    const CasingPoint p = casing_point(alpha, m_casing_elements, m_casing_radius, m_casing_node_dof);
+    const Eigen::Vector4d& n = p.shape;
+    const int n_nodes = p.n_nodes;
+    const int* first = p.first;
+    const int* shape_offset = p.shape_offset;
     double u_casing = 0.0;
     double v_casing_increment = 0.0;
     for (int a = 0; a < n_nodes; ++a)
