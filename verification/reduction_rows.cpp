@@ -15,6 +15,7 @@
 #include <lapacke.h>
 
 #include "critical_step.hpp"
+#include "dense_norms.hpp"
 
 namespace rsi::rows {
 namespace {
@@ -25,36 +26,6 @@ constexpr double lowest_double = std::numeric_limits<double>::lowest();
 using Cholmod = Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>>;
 
 /// ||A||_inf of a sparse matrix (max row sum of |a_ij|).
-double norm_inf(const Eigen::SparseMatrix<double>& a) {
-  return (a.cwiseAbs() * Eigen::VectorXd::Ones(a.cols())).maxCoeff();
-}
-
-double norm_inf(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  return a.cwiseAbs().rowwise().sum().maxCoeff();
-}
-
-/// Extreme eigenvalues (min, max) of a dense symmetric matrix.
-std::pair<double, double> extreme_eigenvalues(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  const Eigen::VectorXd w = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                0.5 * (a + a.transpose()), Eigen::EigenvaluesOnly)
-                                .eigenvalues();
-  return {w(0), w(w.size() - 1)};
-}
-
-/// ||A||_2 of an n x c matrix with few columns (or rows): through the
-/// c x c Gram matrix, never n x n.
-double norm2(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  const Eigen::MatrixXd gram = a.cols() <= a.rows() ? Eigen::MatrixXd(a.transpose() * a)
-                                                    : Eigen::MatrixXd(a * a.transpose());
-  return std::sqrt(std::max(extreme_eigenvalues(gram).second, 0.0));
-}
-
-/// The block A(rows, cols) of a dense matrix.
-Eigen::MatrixXd block(const Eigen::Ref<const Eigen::MatrixXd>& a, const std::vector<int>& rows,
-                      const std::vector<int>& cols) {
-  return take_rows(Eigen::MatrixXd(take_rows(a, rows).transpose()), cols).transpose();
-}
-
 /// The coordinates of q that are not boundary coordinates (modal ones).
 std::vector<int> modal_positions(const ReducedBasis& b) {
   std::vector<bool> is_boundary(b.n_reduced(), false);
@@ -447,13 +418,13 @@ StaticRow static_response(const Component& c, const ReducedBasis& basis,
   // S = K^_bb - K^_bo K^_oo^-1 K^_ob (o: the modal coordinates).
   const std::vector<int>& b = basis.boundary_position;
   const std::vector<int> o = modal_positions(basis);
-  Eigen::MatrixXd s = block(basis.stiffness, b, b);
+  Eigen::MatrixXd s = dense_block(basis.stiffness, b, b);
   if (!o.empty()) {
-    const Eigen::LLT<Eigen::MatrixXd> k_oo(block(basis.stiffness, o, o));
+    const Eigen::LLT<Eigen::MatrixXd> k_oo(dense_block(basis.stiffness, o, o));
     if (k_oo.info() != Eigen::Success)
       throw std::runtime_error("reduction rows: K^_oo of " + basis.method +
                                " is not positive definite");
-    const Eigen::MatrixXd k_ob = block(basis.stiffness, o, b);
+    const Eigen::MatrixXd k_ob = dense_block(basis.stiffness, o, b);
     s -= k_ob.transpose() * k_oo.solve(k_ob);
   }
   const Eigen::MatrixXd& g = c.boundary_flexibility();
@@ -533,10 +504,10 @@ std::vector<RitzRow> rayleigh_ritz(const Component& c,
     // infinite: every finite reduced eigenvalue lies below it, the row holds
     // trivially (ratio 0, error -1: "below by all of it").
     const double excess = red.values(r - 1) - lambda_max;
-    row.top = std::isfinite(lambda_max)
-                  ? Measure{excess / lambda_max,
-                            excess / (red.bound(r - 1) + lanczos_tol * lambda_max)}
-                  : Measure{-1.0, 0.0};
+    row.top =
+        std::isfinite(lambda_max)
+            ? Measure{excess / lambda_max, excess / (red.bound(r - 1) + lanczos_tol * lambda_max)}
+            : Measure{-1.0, 0.0};
     if (previous.size() > 0) {
       row.rise = {lowest_double, lowest_double};
       for (int i = 0; i < std::min<int>(lows, static_cast<int>(previous.size())); ++i) {
@@ -601,11 +572,11 @@ MacNealRow macneal_row(const Component& c, const ReducedBasis& macneal, const Re
   for (int i : b)
     row.boundary_mass = std::max({row.boundary_mass, macneal.mass.row(i).cwiseAbs().maxCoeff(),
                                   macneal.mass.col(i).cwiseAbs().maxCoeff()});
-  row.modal_mass =
-      (block(macneal.mass, o, o) - Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(o.size()),
-                                                             static_cast<Eigen::Index>(o.size())))
-          .cwiseAbs()
-          .maxCoeff();
+  row.modal_mass = (dense_block(macneal.mass, o, o) -
+                    Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(o.size()),
+                                              static_cast<Eigen::Index>(o.size())))
+                       .cwiseAbs()
+                       .maxCoeff();
   row.t_vs_ccm = (t - ccm.transformation).cwiseAbs().maxCoeff();
 
   // K^ = T^T K T, entry by entry (a different summation order from GEMM's).
@@ -621,15 +592,16 @@ MacNealRow macneal_row(const Component& c, const ReducedBasis& macneal, const Re
 
   // The condensed problem again, here with eigenvectors for the bounds:
   // x_b = -K^_bb^-1 K^_bo x_o, z = (x_b, x_o) in q.
-  const Eigen::MatrixXd k_bb = block(macneal.stiffness, b, b);
+  const Eigen::MatrixXd k_bb = dense_block(macneal.stiffness, b, b);
   const Eigen::LLT<Eigen::MatrixXd> k_bb_llt(k_bb);
   if (k_bb_llt.info() != Eigen::Success)
     throw std::runtime_error("macneal_row: K^_bb not positive definite");
-  const Eigen::MatrixXd y = k_bb_llt.solve(block(macneal.stiffness, b, o));
-  Eigen::MatrixXd k_c = block(macneal.stiffness, o, o) - block(macneal.stiffness, o, b) * y;
+  const Eigen::MatrixXd y = k_bb_llt.solve(dense_block(macneal.stiffness, b, o));
+  Eigen::MatrixXd k_c =
+      dense_block(macneal.stiffness, o, o) - dense_block(macneal.stiffness, o, b) * y;
   k_c = 0.5 * (k_c + k_c.transpose());
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> condensed(
-      k_c, block(macneal.mass, o, o));
+      k_c, dense_block(macneal.mass, o, o));
   if (condensed.info() != Eigen::Success)
     throw std::runtime_error("macneal_row: condensed eigenproblem failed");
   const Eigen::MatrixXd x_o = condensed.eigenvectors();

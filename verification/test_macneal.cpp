@@ -38,6 +38,7 @@
 
 #include "bladed_disk.hpp"
 #include "critical_step.hpp"
+#include "dense_norms.hpp"
 #include "macneal.hpp"
 #include "partition.hpp"
 #include "reduced_run.hpp"
@@ -50,28 +51,6 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 /// Spectra's relative tolerance in lowest_modes (modal_analysis.cpp): the
 /// free modes of CCM / MacNeal come from it when 4 psi < n.
 constexpr double lanczos_tol = 1e-12;
-
-double norm_inf(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  return a.cwiseAbs().rowwise().sum().maxCoeff();
-}
-
-std::pair<double, double> extreme_eigenvalues(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  const Eigen::VectorXd w = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                0.5 * (a + a.transpose()), Eigen::EigenvaluesOnly)
-                                .eigenvalues();
-  return {w(0), w(w.size() - 1)};
-}
-
-double norm2(const Eigen::Ref<const Eigen::MatrixXd>& a) {
-  const Eigen::MatrixXd ata = a.cols() <= a.rows() ? Eigen::MatrixXd(a.transpose() * a)
-                                                   : Eigen::MatrixXd(a * a.transpose());
-  return std::sqrt(std::max(extreme_eigenvalues(ata).second, 0.0));
-}
-
-Eigen::MatrixXd block(const Eigen::Ref<const Eigen::MatrixXd>& a, const std::vector<int>& rows,
-                      const std::vector<int>& cols) {
-  return take_rows(Eigen::MatrixXd(take_rows(a, rows).transpose()), cols).transpose();
-}
 
 /// All eigenpairs of A x = lambda B x (B positive definite) by LAPACKE
 /// dsygvd, B-normalised, ascending.
@@ -186,11 +165,11 @@ TEST_F(MacNeal, BoundaryMassBlockAndCouplingExactlyZero) {
     const ReducedBasis& b = basis("macneal", psi);
     const std::vector<int> o = modal_positions(b);
     const double m_bb =
-        block(b.mass, b.boundary_position, b.boundary_position).cwiseAbs().maxCoeff();
-    const double m_bo = block(b.mass, b.boundary_position, o).cwiseAbs().maxCoeff();
-    const double m_ob = block(b.mass, o, b.boundary_position).cwiseAbs().maxCoeff();
+        dense_block(b.mass, b.boundary_position, b.boundary_position).cwiseAbs().maxCoeff();
+    const double m_bo = dense_block(b.mass, b.boundary_position, o).cwiseAbs().maxCoeff();
+    const double m_ob = dense_block(b.mass, o, b.boundary_position).cwiseAbs().maxCoeff();
     const double m_oo =
-        (block(b.mass, o, o) - Eigen::MatrixXd::Identity(psi, psi)).cwiseAbs().maxCoeff();
+        (dense_block(b.mass, o, o) - Eigen::MatrixXd::Identity(psi, psi)).cwiseAbs().maxCoeff();
     std::printf("MacNeal psi = %3d: r = %d; max|M^_BB| = %.1e, max|M^_Bq| = %.1e, max|M^_qB| = "
                 "%.1e, max|M^_qq - I| = %.1e (all exact 0); massless_boundary %d\n",
                 psi, b.n_reduced(), m_bb, m_bo, m_ob, m_oo, b.massless_boundary);
@@ -273,12 +252,13 @@ FiniteEigen finite_eigen(const Model& md, const ReducedBasis& b) {
     out.zero_ratio = std::max(out.zero_ratio, std::abs(inv.values(i)) / inv_bound(i));
   }
   const std::vector<int> o = modal_positions(b);
-  const Eigen::MatrixXd k_bb = block(b.stiffness, b.boundary_position, b.boundary_position);
+  const Eigen::MatrixXd k_bb = dense_block(b.stiffness, b.boundary_position, b.boundary_position);
   const std::pair<double, double> ebb = extreme_eigenvalues(k_bb);
   const double cond_bb = ebb.second / ebb.first;
   const Eigen::MatrixXd k_c =
-      block(b.stiffness, o, o) - block(b.stiffness, o, b.boundary_position) *
-                                     k_bb.llt().solve(block(b.stiffness, b.boundary_position, o));
+      dense_block(b.stiffness, o, o) -
+      dense_block(b.stiffness, o, b.boundary_position) *
+          k_bb.llt().solve(dense_block(b.stiffness, b.boundary_position, o));
   const double kc_norm = norm_inf(k_c);
   const bool lanczos = 4 * psi < n;
   out.bound.resize(psi);
@@ -371,11 +351,11 @@ TEST_F(MacNeal, StaticBoundaryResponseExact) {
   for (int psi : mode_counts) {
     const ReducedBasis& b = basis("macneal", psi);
     const std::vector<int> o = modal_positions(b);
-    const Eigen::MatrixXd k_oo = block(b.stiffness, o, o);
-    const Eigen::MatrixXd k_ob = block(b.stiffness, o, b.boundary_position);
+    const Eigen::MatrixXd k_oo = dense_block(b.stiffness, o, o);
+    const Eigen::MatrixXd k_ob = dense_block(b.stiffness, o, b.boundary_position);
     const Eigen::LLT<Eigen::MatrixXd> k_oo_llt(k_oo);
     ASSERT_EQ(k_oo_llt.info(), Eigen::Success);
-    const Eigen::MatrixXd s = block(b.stiffness, b.boundary_position, b.boundary_position) -
+    const Eigen::MatrixXd s = dense_block(b.stiffness, b.boundary_position, b.boundary_position) -
                               k_ob.transpose() * k_oo_llt.solve(k_ob);
     const std::pair<double, double> es = extreme_eigenvalues(s);
     const double static_bound = 2.0 * n * eps * md.cond_k + nb * eps * b.cond_rb;
