@@ -13,6 +13,8 @@
 #include <thread>
 
 
+#include <nlohmann/json.hpp>
+
 #include "bladed_disk.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
@@ -53,10 +55,18 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
 } // namespace
 
 int run_campaign(const CampaignOptions& options, OutputDirectories& directories) {
-  const Case c = load_case(options.case_path);
+  const nlohmann::json document = read_case_document(options.case_path);
+  if (is_component_case(document))
+    return run_rubbing_campaign(options, parse_component_case(document, options.case_path),
+                                directories);
+  if (!options.load.source_override.empty())
+    throw UsageError("--source: only for a component case; " + options.case_path +
+                     " is the paper's case");
+  const Case c = parse_case(document, options.case_path);
   if (c.campaign.empty())
     throw UsageError(c.source + ": key 'campaign': missing or empty, nothing to run");
-  if (options.jobs < 1 || options.jobs > 64)
+  const int jobs = options.jobs == 0 ? 2 : options.jobs;
+  if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
   // Mode counts against the model before any run (the case loader only
   // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
@@ -124,7 +134,7 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
     }
   };
   std::vector<std::thread> threads;
-  for (int t = 0; t < std::min<int>(options.jobs, static_cast<int>(runs.size())); ++t)
+  for (int t = 0; t < std::min<int>(jobs, static_cast<int>(runs.size())); ++t)
     threads.emplace_back(worker);
   for (std::thread& t : threads)
     t.join();

@@ -10,6 +10,7 @@
 
 #include "case_file.hpp"
 #include "component_case.hpp"
+#include "history.hpp"
 #include "modal_analysis.hpp"
 
 namespace rsi {
@@ -48,6 +49,7 @@ struct SimulateOptions {
   std::string out = "out/simulate";
   bool force = false;
   bool full_field = false;
+  ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
 };
 
 struct ReduceOptions {
@@ -61,9 +63,10 @@ struct ReduceOptions {
 struct CampaignOptions {
   std::string case_path;
   std::string out = "out/campaign";
-  int jobs = 2;
+  int jobs = 0; ///< runs in parallel; 0: the default (2 for the paper's case, 1 for a component case)
   double target_e2 = 0.0; ///< report the smallest eta, psi reaching it (0: no)
   bool report = true;     ///< run reports/make_campaign_report.py at the end
+  ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
 };
 
 struct ModalCampaignOptions {
@@ -88,8 +91,18 @@ int run_modes(const ModesOptions& options, OutputDirectories& directories);
 int run_export(const ExportOptions& options, OutputDirectories& directories);
 int run_calibrate(const CalibrateOptions& options);
 int run_simulate(const SimulateOptions& options, OutputDirectories& directories);
+/// rsi simulate on a component case with a "rubbing" object.
+int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
+                           OutputDirectories& directories);
 int run_reduce(const ReduceOptions& options, OutputDirectories& directories);
 int run_campaign(const CampaignOptions& options, OutputDirectories& directories);
+/// rsi campaign on a component case (rubbing.campaign).
+int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
+                         OutputDirectories& directories);
+/// history.csv of a component run: t, the response dof, then the columns of
+/// history_csv_header with two tangents per contact.
+std::string component_history_header(const std::string& response_name, int n_contacts);
+void append_component_history_row(std::string& out, const HistoryRow& row, double response);
 int run_modal_campaign(const ModalCampaignOptions& options, OutputDirectories& directories);
 
 } // namespace rsi

@@ -17,11 +17,7 @@ namespace rsi {
 
 ComponentInput load_component_input(const std::string& case_path, const std::string& part,
                                     const ComponentLoadOptions& load) {
-  std::ifstream in(case_path);
-  if (!in) throw CaseError(case_path + ": cannot open the case file (missing or unreadable)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const nlohmann::json document = case_json::parse_document(text.str(), case_path);
+  const nlohmann::json document = read_case_document(case_path);
   ComponentInput input;
   input.case_source = case_path;
   if (is_component_case(document)) {

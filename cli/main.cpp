@@ -184,9 +184,11 @@ int main(int argc, char** argv) {
   simulate_cmd->add_option("case", simulate.case_path, "case file (JSON)")
       ->required()
       ->check(case_file());
-  simulate_cmd->add_option("--method", simulate.method, "full (reference), cb, ccm or guyan")
+  simulate_cmd
+      ->add_option("--method", simulate.method,
+                   "full (reference), cb, ccm or guyan; macneal for a component case")
       ->capture_default_str()
-      ->check(one_of({"full", "cb", "ccm", "guyan"}));
+      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
   CLI::Option* simulate_modes =
       simulate_cmd->add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
           ->capture_default_str()
@@ -199,6 +201,7 @@ int main(int argc, char** argv) {
       ->check(nonempty_path());
   simulate_cmd->add_flag("--force", simulate.force,
                          "integrate even with a time step above the stability limit");
+  add_component_options(*simulate_cmd, simulate.load);
 
   rsi::ReduceOptions reduce;
   CLI::App* reduce_cmd = app.add_subcommand(
@@ -228,8 +231,8 @@ int main(int argc, char** argv) {
   campaign_cmd->add_option("--out", campaign.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
-  campaign_cmd->add_option("--jobs", campaign.jobs, "runs in parallel (threads), 1..64")
-      ->capture_default_str()
+  campaign_cmd->add_option("--jobs", campaign.jobs,
+                           "runs in parallel (threads), 1..64; default 2 (a component case: 1)")
       ->check(integer_in(1, 64, "an integer in [1, 64]"));
   campaign_cmd
       ->add_option("--target-e2", campaign.target_e2,
@@ -237,6 +240,7 @@ int main(int argc, char** argv) {
       ->check(number_above(0.0, "a finite number above 0"));
   campaign_cmd->add_flag("!--no-report", campaign.report,
                          "skip the report (reports/make_campaign_report.py, python3 + matplotlib)");
+  add_component_options(*campaign_cmd, campaign.load);
 
   rsi::ModalCampaignOptions modal_campaign;
   CLI::App* modal_campaign_cmd = app.add_subcommand(

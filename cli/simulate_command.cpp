@@ -6,7 +6,11 @@
 #include <string>
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
+#include "case_json.hpp"
 #include "commands.hpp"
+#include "component_case.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
@@ -50,10 +54,18 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 } // namespace
 
 int run_simulate(const SimulateOptions& options, OutputDirectories& directories) {
-  const Case c = load_case(options.case_path);
+  const nlohmann::json document = read_case_document(options.case_path);
+  if (is_component_case(document))
+    return run_component_simulate(options, parse_component_case(document, options.case_path),
+                                  directories);
+  if (!options.load.source_override.empty())
+    throw UsageError("--source: only for a component case; " + options.case_path +
+                     " is the paper's case");
+  const Case c = parse_case(document, options.case_path);
   const bool full = options.method == "full";
   if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")
-    throw UsageError("--method: must be full, cb, ccm or guyan, got '" + options.method + "'");
+    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
+                     "component cases), got '" + options.method + "'");
   if (full && options.full_field)
     throw UsageError(
         "--full-field: only for the reduced methods (the full run has every dof already)");

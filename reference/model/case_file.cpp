@@ -121,23 +121,7 @@ Case parse_case(const json& document, const std::string& source) {
   time.finish();
   check_run_size(c, time);
 
-  // Optional: "damping": {"rayleigh": {"alpha": .., "beta": ..}, "modal_ratio": ..}.
-  top.claim("damping");
-  if (document.contains("damping")) {
-    ObjectReader damping = top.object("damping");
-    damping.optional_note("note");
-    damping.claim("rayleigh");
-    if (document.at("damping").is_object() && document.at("damping").contains("rayleigh")) {
-      ObjectReader rayleigh = damping.object("rayleigh");
-      c.damping.rayleigh.alpha = rayleigh.number("alpha", {0.0, inf, false, true, "1/s"});
-      c.damping.rayleigh.beta = rayleigh.number("beta", {0.0, inf, false, true, "s"});
-      rayleigh.finish();
-    }
-    damping.claim("modal_ratio");
-    if (document.at("damping").contains("modal_ratio"))
-      c.damping.modal_ratio = damping.number("modal_ratio", {0.0, 1.0, false, true, ""});
-    damping.finish();
-  }
+  c.damping = read_damping(top, document);
 
   // Optional: "campaign": [{"method": "cb", "modes": [0, 10]}, ...].
   top.claim("campaign");
@@ -174,13 +158,17 @@ Case parse_case_text(const std::string& text, const std::string& source) {
   return parse_case(case_json::parse_document(text, source), source);
 }
 
-Case load_case(const std::string& path) {
+nlohmann::json read_case_document(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw CaseError(path + ": cannot open the case file (missing or unreadable)");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw CaseError(path + ": cannot read the case file");
-  return parse_case_text(text.str(), path);
+  return case_json::parse_document(text.str(), path);
+}
+
+Case load_case(const std::string& path) {
+  return parse_case(read_case_document(path), path);
 }
 
 } // namespace rsi

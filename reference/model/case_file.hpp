@@ -130,6 +130,12 @@ Case parse_case(const nlohmann::json& document, const std::string& source);
 /// exception escapes for any text (checked by fuzz/fuzz_case_loader.cpp).
 Case parse_case_text(const std::string& text, const std::string& source);
 
+/// The JSON document of a case file of either kind (the paper's case or a
+/// component case), parsed by case_json::parse_document. Throws CaseError
+/// for a missing or unreadable file, malformed JSON, a repeated key or
+/// too deep a nesting.
+nlohmann::json read_case_document(const std::string& path);
+
 /// Reads and validates a case file (parse_case_text on its contents). Throws
 /// CaseError for a missing or unreadable file, malformed JSON and every
 /// schema violation.

@@ -109,6 +109,9 @@ public:
     throw CaseError(m_source + ": key '" + key + "': " + what);
   }
 
+  /// The file named in messages.
+  const std::string& source() const { return m_source; }
+
   std::string full(const std::string& key) const {
     return m_path.empty() ? key : m_path + "." + key;
   }
@@ -125,6 +128,29 @@ private:
   const std::string& m_source;
   std::set<std::string> m_seen;
 };
+
+/// The optional "damping" object of `document` (a case file's top level,
+/// read by `top`): {"rayleigh": {"alpha": .., "beta": ..}, "modal_ratio": ..,
+/// "note": ".."}; absent: all zero.
+inline Damping read_damping(ObjectReader& top, const json& document) {
+  Damping out;
+  top.claim("damping");
+  if (!document.contains("damping")) return out;
+  ObjectReader damping = top.object("damping");
+  damping.optional_note("note");
+  damping.claim("rayleigh");
+  if (document.at("damping").is_object() && document.at("damping").contains("rayleigh")) {
+    ObjectReader rayleigh = damping.object("rayleigh");
+    out.rayleigh.alpha = rayleigh.number("alpha", {0.0, inf, false, true, "1/s"});
+    out.rayleigh.beta = rayleigh.number("beta", {0.0, inf, false, true, "s"});
+    rayleigh.finish();
+  }
+  damping.claim("modal_ratio");
+  if (document.at("damping").contains("modal_ratio"))
+    out.modal_ratio = damping.number("modal_ratio", {0.0, 1.0, false, true, ""});
+  damping.finish();
+  return out;
+}
 
 /// Deepest nesting of objects and arrays a case file may have (the schema
 /// needs 4); deeper documents are refused before anything recurses on them.

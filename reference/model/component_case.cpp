@@ -13,6 +13,7 @@
 #include "calculix_matrices.hpp"
 #include "calculix_run.hpp"
 #include "case_json.hpp"
+#include "mass_lumping.hpp"
 #include "matrix_market.hpp"
 
 namespace rsi {
@@ -132,6 +133,78 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
   return (entry / "blade.inp").string();
 }
 
+/// The "rubbing" object (component_case.hpp, data/README.md).
+RubbingSetup read_rubbing(ObjectReader r, const json& object) {
+  RubbingSetup out;
+  r.claim("contact_nodes");
+  if (object.contains("contact_nodes"))
+    out.contact_nodes = integer_list(r, object, "contact_nodes", 1, 2147483647L);
+  r.claim("gap");
+  const json& gj = object.contains("gap") ? object.at("gap") : json();
+  const bool oval = gj.is_object() && gj.size() == 1 && gj.contains("oval");
+  const bool constant = gj.is_object() && gj.size() == 1 && gj.contains("constant");
+  if (!oval && !constant)
+    r.fail(r.full("gap"), "must be {\"oval\": {\"g_m\": .., \"width\": ..}} or "
+                          "{\"constant\": g0}, got " + gj.dump().substr(0, 80));
+  ObjectReader gap = r.object("gap");
+  out.oval_gap = oval;
+  if (oval) {
+    ObjectReader o = gap.object("oval");
+    out.gap = o.number("g_m", {0.0, inf, true, true, "(length)"});
+    out.gap_width = o.number("width", {0.0, 1.0, true, true, ""});
+    o.finish();
+  } else {
+    out.gap = gap.number("constant", {-inf, inf, true, true, "(length)"});
+  }
+  gap.finish();
+  out.friction_coefficient = r.number("friction_coefficient", {0.0, 2.0, false, false, ""});
+  out.rotation_speed = r.number("rotation_speed", {0.0, 1e5, true, false, "rad/s"});
+  out.revolutions = r.number("revolutions", {0.0, 1e5, true, false, ""});
+  out.steps_per_revolution = r.integer("steps_per_revolution", 1, 100000000);
+  r.claim("output_every");
+  if (object.contains("output_every")) out.output_every = r.integer("output_every", 1, 100000000);
+  ObjectReader response = r.object("response");
+  out.response_node = response.integer("node", 1, 2147483647L);
+  out.response_direction = response.integer("direction", 1, 3);
+  response.finish();
+  r.claim("step_safety");
+  if (object.contains("step_safety"))
+    out.step_safety = r.number("step_safety", {0.0, 1.0, true, true, ""});
+  r.claim("campaign");
+  if (object.contains("campaign")) {
+    const json& cj = object.at("campaign");
+    ObjectReader campaign = r.object("campaign");
+    campaign.claim("runs");
+    const json& runs = cj.contains("runs") ? cj.at("runs") : json();
+    if (!runs.is_array() || runs.empty())
+      campaign.fail(campaign.full("runs"),
+                    "must be a non-empty array of {\"method\": \"cb\"|\"ccm\"|\"macneal\", "
+                    "\"modes\": [..]}");
+    for (size_t i = 0; i < runs.size(); ++i) {
+      ObjectReader run(runs[i], campaign.full("runs") + "[" + std::to_string(i) + "]", r.source());
+      RubbingRuns item;
+      item.method = string_value(run, runs[i], "method");
+      if (item.method != "cb" && item.method != "ccm" && item.method != "macneal")
+        run.fail(run.full("method"), "must be \"cb\", \"ccm\" or \"macneal\", got \"" +
+                                         item.method + "\"");
+      item.modes = integer_list(run, runs[i], "modes", 1, 100000);
+      run.finish();
+      out.campaign.push_back(item);
+    }
+    campaign.claim("full_revolutions");
+    if (cj.contains("full_revolutions"))
+      out.full_revolutions =
+          campaign.number("full_revolutions", {0.0, out.revolutions, false, false, "(at most revolutions)"});
+    campaign.finish();
+  }
+  r.finish();
+  if (static_cast<double>(out.steps_per_revolution) * out.revolutions > 2147483647.0)
+    r.fail(r.full("revolutions"), "revolutions x steps_per_revolution must be at most "
+                                  "2147483647 (steps of one run), got " +
+                                      std::to_string(out.revolutions * out.steps_per_revolution));
+  return out;
+}
+
 } // namespace
 
 bool is_component_case(const json& document) {
@@ -200,6 +273,14 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
   }
 
+  comp.claim("mass");
+  if (cj.contains("mass")) {
+    const json& mass = cj.at("mass");
+    if (mass != "consistent" && mass != "lumped")
+      comp.fail(comp.full("mass"), "must be \"consistent\" or \"lumped\" (HRZ), got " +
+                                       mass.dump().substr(0, 80));
+    c.lumped_mass = mass == "lumped";
+  }
   c.units = string_value(comp, cj, "units");
   comp.claim("rotation_axis");
   if (cj.contains("rotation_axis")) {
@@ -238,6 +319,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     mc.finish();
     c.modal_campaign = campaign;
   }
+  top.claim("rubbing");
+  if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
+  c.damping = read_damping(top, document);
   top.finish();
   return c;
 }
@@ -279,6 +363,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
   }
   component.units = c.units;
   component.rotation_axis = c.rotation_axis;
+  if (c.lumped_mass) component.mass = hrz_lumped_mass(component);
   return component;
 }
 

@@ -15,7 +15,18 @@
 //                  "boundary": {"nodes": [188, 190, ...]},
 //                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
 //    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
-//                       "frequencies": 20}}
+//                       "frequencies": 20},
+//    "rubbing": {...}, "damping": {...}}
+// "component.mass": "consistent" (absent) or "lumped" (HRZ, mass_lumping.hpp:
+// for explicit full-order runs of a model whose consistent mass is singular;
+// every command then uses the lumped mass). "rubbing" (optional) is the
+// contact run of `rsi simulate` and `rsi campaign` on the component: the
+// rigid casing of reference/contact/rigid_surface_contact.hpp over the
+// contact nodes (absent: the boundary's nodes), its gap, friction and
+// speed, the length of the run in revolutions and the sampling, the
+// response dof, and the reduced runs of the campaign (data/README.md).
+// "damping" as in the paper's case: Rayleigh for the full model, a modal
+// ratio on the kept modes of a reduced one.
 //
 // A rejected file raises CaseError naming the file and the key (exit 2).
 
@@ -26,6 +37,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
+#include "case_file.hpp"
 #include "component.hpp"
 #include "gmsh_blade.hpp"
 
@@ -37,6 +49,30 @@ struct ModalCampaign {
   std::vector<std::string> methods; ///< "cb", "ccm", "macneal"
   std::vector<int> modes;           ///< mode counts, ascending
   int frequencies = 20;             ///< lowest reduced frequencies compared
+};
+
+/// One method of the rubbing campaign and its mode counts.
+struct RubbingRuns {
+  std::string method; ///< "cb", "ccm" or "macneal"
+  std::vector<int> modes;
+};
+
+/// The "rubbing" object: a contact run on the rigid casing (issue 12).
+struct RubbingSetup {
+  std::vector<int> contact_nodes;   ///< empty: the boundary's nodes, in boundary order
+  bool oval_gap = true;             ///< oval (g_m, width) or constant (gap)
+  double gap = 0.0;                 ///< oval: g_m > 0; constant: g0 [length]
+  double gap_width = 0.15;          ///< oval: w in (0, 1)
+  double friction_coefficient = 0.0;
+  double rotation_speed = 0.0;      ///< Omega > 0 [rad/s]
+  double revolutions = 0.0;         ///< length of a run, > 0
+  int steps_per_revolution = 0;     ///< N: samples a revolution (MacNeal's step T/N)
+  int output_every = 1;             ///< a history row every this many samples
+  int response_node = 0;            ///< node id of the response dof
+  int response_direction = 0;       ///< 1..3
+  double step_safety = 0.9;         ///< mass-carrying runs: dt <= safety 2/omega_max, in (0, 1)
+  std::vector<RubbingRuns> campaign; ///< reduced runs of `rsi campaign`
+  double full_revolutions = 0.0;    ///< the campaign's full reference window (0: none)
 };
 
 struct ComponentCase {
@@ -54,6 +90,9 @@ struct ComponentCase {
   std::string units;
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;
+  bool lumped_mass = false;            ///< "component.mass": "lumped" (HRZ)
+  std::optional<RubbingSetup> rubbing;
+  Damping damping;
 };
 
 /// True if the JSON document is a component case (has a "component" key).

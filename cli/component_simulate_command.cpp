@@ -1,0 +1,87 @@
+// rsi simulate on a component case: the rubbing run of its "rubbing" object
+// (cli/rubbing_run.hpp) -> history.csv, summary.json.
+
+#include <cstdio>
+#include <string>
+
+#include "commands.hpp"
+#include "interruption.hpp"
+#include "output_files.hpp"
+#include "rubbing_run.hpp"
+#include "run_outputs.hpp"
+
+namespace rsi {
+
+std::string component_history_header(const std::string& response_name, int n_contacts) {
+  // t, the response dof, then the columns of the paper's case (3D: two tangents).
+  return "t," + response_name + history_csv_header(n_contacts, 2).substr(1);
+}
+
+void append_component_history_row(std::string& out, const HistoryRow& row, double response) {
+  std::string rest;
+  append_history_csv_row(rest, row);
+  const size_t comma = rest.find(',');
+  out += rest.substr(0, comma);
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, ",%.17g", response);
+  out += buffer;
+  out += rest.substr(comma);
+}
+
+int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
+                           OutputDirectories& directories) {
+  if (options.full_field)
+    throw UsageError("--full-field: only for the paper's case (a component case writes the "
+                     "response dof of its 'rubbing.response')");
+  if (options.method == "full" && options.modes != 0)
+    throw UsageError("--modes: only for a reduced method; drop it");
+  const RubbingModel model = load_rubbing_model(c, options.load);
+  directories.make(options.out, "--out");
+  StreamedTextFile history_file(options.out + "/history.csv");
+  std::string line;
+  int rows = 0;
+  const int nc = static_cast<int>(model.contact_nodes.size());
+  const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
+    line.clear();
+    if (rows++ == 0) line = component_history_header(model.response_name, nc);
+    append_component_history_row(line, row, response);
+    history_file.append(line);
+  };
+  RubbingRunOptions run;
+  run.method = options.method;
+  run.modes = options.modes;
+  run.force = options.force;
+  run.checkpoint = throw_if_interrupted;
+  const RubbingRun result = run_rubbing(model, run, sink);
+  throw_if_interrupted();
+  if (rows == 0) history_file.append(component_history_header(model.response_name, nc));
+  history_file.commit();
+  write_text_file(options.out + "/summary.json", summary_json(result.summary));
+  const RunSummary& s = result.summary;
+  std::printf("%s: method %s%s, %d %s, %d contact nodes, %d of %d steps in %.3f s "
+              "(integration %.3f s, basis %.3f s)\n",
+              c.case_path.c_str(), s.method.c_str(),
+              options.method == "full" ? "" : (" " + std::to_string(options.modes) + " modes").c_str(),
+              s.n_dofs, options.method == "full" ? "dofs" : "coordinates", nc, s.steps,
+              s.steps_requested, s.wall_seconds, s.integration_seconds, s.basis_seconds);
+  std::printf("omega_max %.6e rad/s, critical step %.6e s, step %.6e s (%d a sample, %d samples a "
+              "revolution)\n",
+              s.omega_max, s.critical_dt, s.dt, result.steps_per_sample,
+              model.setup.steps_per_revolution);
+  std::printf("status: %s\n", s.status.c_str());
+  std::printf("max penetration %.3e, min lambda %.3e, max lambda %.3e, max |lambda g| %.3e "
+              "(model units)\n",
+              s.max_penetration, s.min_lambda, s.max_lambda, s.max_complementarity);
+  std::printf("coulomb certificate: max cone violation %.3e, max stick/slip residual %.3e "
+              "(scaled), stick/slip transitions %d, contact-steps stick %ld slip %ld\n",
+              s.max_cone_violation, s.max_stick_slip_residual, s.stick_slip_transitions,
+              s.stick_contact_steps, s.slip_contact_steps);
+  std::printf("energy balance error %.3e (scale %.3e); W_contact %.6e, W_damp %.6e\n",
+              s.energy_balance_error, s.energy_scale, s.final_contact_work, s.final_damping_work);
+  std::printf("wrote %s/history.csv, %s/summary.json\n", options.out.c_str(), options.out.c_str());
+  if (s.completed) return 0;
+  std::fprintf(stderr, "rsi: error: numerical failure: the run stopped: %s\n", s.status.c_str());
+  return 3;
+}
+
+} // namespace rsi

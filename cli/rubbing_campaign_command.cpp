@@ -1,0 +1,190 @@
+// rsi campaign on a component case: the full-order reference over the
+// case's rubbing.campaign.full_revolutions and every reduced run of
+// rubbing.campaign.runs over rubbing.revolutions, each at its own stable
+// step and sampled at the same instants (rubbing_run.hpp), with the error
+// norms of the response dof and of the contact forces over the reference's
+// window -> convergence.csv, runs/<name>/{history.csv,summary.json} and,
+// unless --no-report, the report (reports/make_rubbing_report.py).
+//
+// Norms over the rows j of the window (the reference's rows), x the
+// response dof, Lambda the normal multipliers of every contact:
+//   e2_response = ||x - x_ref||_2 / ||x_ref||_2,
+//   einf_response = max_j |x_j - x_ref,j| / max_j |x_ref,j|,
+//   e2_lambda = ||Lambda - Lambda_ref||_F / ||Lambda_ref||_F,
+//   einf_lambda = max |Lambda - Lambda_ref| / max |Lambda_ref|.
+// Runs one after the other (--jobs 1): their wall times are the cost table.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "commands.hpp"
+#include "interruption.hpp"
+#include "output_files.hpp"
+#include "reduced_basis.hpp"
+#include "report_script.hpp"
+#include "rubbing_run.hpp"
+#include "run_outputs.hpp"
+
+namespace rsi {
+namespace {
+
+struct RubbingCampaignRun {
+  std::string method;
+  int modes = 0;
+  RubbingRun run;
+  std::vector<double> response;
+  std::vector<Eigen::VectorXd> lambda_n;
+  std::string error; ///< why the run could not be made
+};
+
+struct ErrorNorms {
+  double e2_response = NAN, einf_response = NAN, e2_lambda = NAN, einf_lambda = NAN;
+};
+
+ErrorNorms error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref) {
+  const size_t n = std::min(r.response.size(), ref.response.size());
+  double dx2 = 0, x2 = 0, dxi = 0, xi = 0, dl2 = 0, l2 = 0, dli = 0, li = 0;
+  for (size_t j = 0; j < n; ++j) {
+    const double d = r.response[j] - ref.response[j];
+    dx2 += d * d;
+    x2 += ref.response[j] * ref.response[j];
+    dxi = std::max(dxi, std::abs(d));
+    xi = std::max(xi, std::abs(ref.response[j]));
+    const Eigen::VectorXd dl = r.lambda_n[j] - ref.lambda_n[j];
+    dl2 += dl.squaredNorm();
+    l2 += ref.lambda_n[j].squaredNorm();
+    dli = std::max(dli, dl.cwiseAbs().maxCoeff());
+    li = std::max(li, ref.lambda_n[j].cwiseAbs().maxCoeff());
+  }
+  ErrorNorms e;
+  if (n == 0) return e;
+  e.e2_response = std::sqrt(dx2 / x2);
+  e.einf_response = dxi / xi;
+  e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;
+  e.einf_lambda = li > 0 ? dli / li : NAN;
+  return e;
+}
+
+std::string run_name(const RubbingCampaignRun& r) {
+  return r.method == "full" ? "full" : r.method + "-" + std::to_string(r.modes);
+}
+
+/// Runs one entry into DIR/runs/<name>/ (history streamed, committed at the end).
+void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revolutions,
+               const std::string& dir, OutputDirectories& directories) {
+  directories.make(dir, "--out");
+  StreamedTextFile history(dir + "/history.csv");
+  std::string line;
+  int rows = 0;
+  const int nc = static_cast<int>(model.contact_nodes.size());
+  const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
+    line.clear();
+    if (rows++ == 0) line = component_history_header(model.response_name, nc);
+    append_component_history_row(line, row, response);
+    history.append(line);
+    entry.response.push_back(response);
+    entry.lambda_n.push_back(row.lambda);
+  };
+  RubbingRunOptions o;
+  o.method = entry.method;
+  o.modes = entry.modes;
+  o.revolutions = revolutions;
+  o.checkpoint = throw_if_interrupted;
+  try {
+    entry.run = run_rubbing(model, o, sink);
+  } catch (const ReductionError& e) {
+    entry.error = e.what();
+    return;
+  }
+  throw_if_interrupted();
+  history.commit();
+  write_text_file(dir + "/summary.json", summary_json(entry.run.summary));
+  if (!entry.run.summary.completed) entry.error = entry.run.summary.status;
+}
+
+} // namespace
+
+int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
+                         OutputDirectories& directories) {
+  if (!c.rubbing || c.rubbing->campaign.empty())
+    throw UsageError(c.case_path + ": key 'rubbing.campaign': missing, nothing to run (a "
+                                   "component case's campaign lists its reduced runs there)");
+  if (options.jobs > 1)
+    throw UsageError("--jobs: a component case's campaign runs one run at a time (its wall "
+                     "times are the cost table); use --jobs 1");
+  if (options.target_e2 > 0.0)
+    throw UsageError("--target-e2: only for the paper's case; a component case's convergence.csv "
+                     "lists every run's e2");
+  const RubbingModel model = load_rubbing_model(c, options.load);
+  const RubbingSetup& setup = model.setup;
+  directories.make(options.out, "--out");
+  std::vector<RubbingCampaignRun> runs;
+  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}});
+  for (const RubbingRuns& item : setup.campaign)
+    for (int modes : item.modes)
+      runs.push_back({item.method, modes, {}, {}, {}, {}});
+  for (RubbingCampaignRun& r : runs) {
+    const double revolutions = r.method == "full" ? setup.full_revolutions : setup.revolutions;
+    run_entry(model, r, revolutions, options.out + "/runs/" + run_name(r), directories);
+    const RunSummary& s = r.run.summary;
+    std::printf("%-8s %4d: %s; dt %.4e s (critical %.4e s), %d steps, basis %.2f s, "
+                "integration %.3f s\n",
+                r.method.c_str(), r.modes, r.error.empty() ? "completed" : r.error.c_str(), s.dt,
+                s.critical_dt, s.steps, s.basis_seconds, s.integration_seconds);
+    std::fflush(stdout);
+  }
+  const RubbingCampaignRun* reference =
+      setup.full_revolutions > 0.0 && runs.front().error.empty() ? &runs.front() : nullptr;
+  std::ostringstream csv;
+  csv.precision(10);
+  csv << "method,modes,coordinates,dt,critical_dt,steps_per_sample,steps,completed,basis_s,"
+         "integration_s,us_per_step,window_revolutions,e2_response,einf_response,e2_lambda,"
+         "einf_lambda,stick_slip_transitions,stick_fraction,slip_fraction,max_cone_violation,"
+         "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work\n";
+  for (const RubbingCampaignRun& r : runs) {
+    const RunSummary& s = r.run.summary;
+    const ErrorNorms e = reference && r.error.empty() ? error_norms(r, *reference) : ErrorNorms{};
+    const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes.size();
+    csv << r.method << ',' << r.modes << ',' << s.n_dofs << ',' << s.dt << ',' << s.critical_dt
+        << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
+        << s.basis_seconds << ',' << s.integration_seconds << ','
+        << 1e6 * s.integration_seconds / std::max(s.steps, 1) << ','
+        << (reference ? setup.full_revolutions : 0.0) << ',' << e.e2_response << ','
+        << e.einf_response << ',' << e.e2_lambda << ',' << e.einf_lambda << ','
+        << s.stick_slip_transitions << ',' << s.stick_contact_steps / contact_steps << ','
+        << s.slip_contact_steps / contact_steps << ',' << s.max_cone_violation << ','
+        << s.max_stick_slip_residual << ',' << s.energy_balance_error << ',' << s.energy_scale
+        << ',' << s.final_contact_work << ',' << s.final_damping_work << '\n';
+    std::printf("%-8s %4d  e2 response %.4e  einf %.4e  e2 lambda %.4e  einf %.4e\n",
+                r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
+                e.einf_lambda);
+  }
+  write_text_file(options.out + "/convergence.csv", csv.str());
+  std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
+              options.out.c_str(), options.out.c_str());
+  const bool all_ok = std::all_of(runs.begin(), runs.end(),
+                                  [](const RubbingCampaignRun& r) { return r.error.empty(); });
+  if (options.report) {
+    std::fflush(stdout);
+    const int status = run_report_script("make_rubbing_report.py", options.out);
+    if (status != 0) {
+      std::fprintf(stderr,
+                   "rsi: error: the report generator %s/make_rubbing_report.py failed (status "
+                   "%d); the runs and convergence.csv are written; rerun it by hand or use "
+                   "--no-report\n",
+                   RSI_REPORTS_DIR, status);
+      return 1;
+    }
+    std::printf("report: %s/report.md\n", options.out.c_str());
+  }
+  if (all_ok) return 0;
+  for (const RubbingCampaignRun& r : runs)
+    if (!r.error.empty())
+      std::fprintf(stderr, "rsi: error: numerical failure: %s: %s\n", run_name(r).c_str(),
+                   r.error.c_str());
+  return 3;
+}
+
+} // namespace rsi

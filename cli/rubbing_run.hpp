@@ -1,0 +1,68 @@
+#pragma once
+// A component case's contact run on the rigid casing (its "rubbing" object,
+// issue 12): the full-order reference (reference/solver/component_reference_run)
+// or a reduced model (reduced/component_integrator), each at its own stable
+// step, sampled at the same times.
+//
+// Time steps. T = 2 pi / Omega, N = steps_per_revolution. Every run
+// integrates at dt = T / (k N), k >= 1 the smallest integer with
+// dt <= step_safety x 2/omega_max of the model integrated (MacNeal: of its
+// kept free modes, the boundary being massless; the full model: Lanczos on
+// (K, M)), and samples every k steps (times output_every): every method's
+// rows fall at the same instants t = j T / N, so histories compare row by
+// row with no interpolation.
+//
+// Multipliers in a row: the full run and the mass-carrying reduced runs
+// (CB, CCM, Guyan) give lambda of the step that produced u_n (lambda_{n-1},
+// forward increment); MacNeal's massless boundary gives lambda_n, in static
+// balance with u_B^n (component_integrator.hpp). Both are the contact force
+// at t_n to first order in dt.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "component_case.hpp"
+#include "component_reference_run.hpp"
+#include "history.hpp"
+
+namespace rsi {
+
+struct RubbingModel {
+  ComponentCase component_case;
+  Component component;
+  RubbingSetup setup;
+  std::vector<int> contact_nodes; ///< node ids, the casing's contact order
+  int response_dof = -1;
+  std::string response_name;      ///< "u_NODE_DIR", the history column
+  double period = 0.0;            ///< T = 2 pi / Omega [s]
+};
+
+/// The component and its rubbing set-up. Throws CaseError (no "rubbing"
+/// object, a response or contact node that is not in the model) or
+/// ImportError.
+RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptions& load);
+
+struct RubbingRunOptions {
+  std::string method = "full"; ///< full, cb, ccm, guyan, macneal
+  int modes = 0;
+  double revolutions = 0.0;    ///< 0: the case's
+  bool force = false;          ///< integrate at or above the stable step
+  std::function<void()> checkpoint;
+  std::function<void(double)> progress;
+};
+
+struct RubbingRun {
+  RunSummary summary;
+  int steps_per_sample = 1; ///< k of the header
+  int reduced_size = 0;     ///< r of a reduced model (0: full)
+};
+
+/// Runs and streams every row (t, the response dof, gaps, multipliers,
+/// energy, works) to `sink`. Throws ReductionError (bad mode count),
+/// StabilityError (with force only... never: the step is chosen stable),
+/// std::invalid_argument for a bad method.
+RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
+                       const ComponentRowSink& sink);
+
+} // namespace rsi
