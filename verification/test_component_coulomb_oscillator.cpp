@@ -72,9 +72,10 @@ RigidCasing pressed_plane() {
 
 /// The oscillator's node as a reduced model, its spring on `dof`: Craig-
 /// Bampton with every dof on the boundary and 0 modes, T = I, K^ = K, M^ = M,
-/// written by hand (reduce(..., "cb", 0) of a component without interior dofs
-/// factors an empty K_II through CHOLMOD, which fails: see the report of this
-/// change; the basis needs no factorization at all).
+/// written by hand: reduce(..., "cb", 0) of a component without interior dofs
+/// hands an empty K_II to CHOLMOD, which fails ("invalid xtype") and then
+/// crashes (a bug of reduced/bases, not fixed here); this basis needs no
+/// factorization at all.
 ReducedBasis node_model(const coulomb::Oscillator& o, int dof) {
   ReducedBasis b;
   b.method = "cb";
