@@ -69,6 +69,25 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                   " finite entries >= 0 (or none)");
     if (options.damping.any()) m_c = options.damping;
   }
+  const auto check_force = [&](const Eigen::VectorXd& f, const char* name) {
+    if (f.size() != 0 && (f.size() != m_r || !f.allFinite()))
+      throw std::invalid_argument(kWhere + name + ": " + std::to_string(f.size()) +
+                                  " entries, allowed " + std::to_string(m_r) +
+                                  " finite entries (or none)");
+  };
+  check_force(options.force_constant, "force_constant");
+  check_force(options.force_harmonic, "force_harmonic");
+  if (!std::isfinite(options.force_frequency) || !std::isfinite(options.force_phase))
+    throw std::invalid_argument(
+        kWhere + "force_frequency = " + message_number(options.force_frequency) +
+        ", force_phase = " + message_number(options.force_phase) + ", allowed finite values");
+  m_force = options.force_constant.size() != 0 || options.force_harmonic.size() != 0;
+  if (m_force) {
+    m_f0 = options.force_constant.size() ? options.force_constant : Eigen::VectorXd::Zero(m_r);
+    m_f1 = options.force_harmonic.size() ? options.force_harmonic : Eigen::VectorXd::Zero(m_r);
+    m_omega_f = options.force_frequency;
+    m_phi_f = options.force_phase;
+  }
   m_k = basis.stiffness;
   m_m = basis.mass;
 
@@ -110,6 +129,10 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
       bt.row(m_boundary[k]) = m_b.col(k).transpose();
     m_g = (m_dt * m_dt) * llt.solve(bt);
     m_w = bt.transpose() * m_g;
+    if (m_force) {
+      m_gf0 = (m_dt * m_dt) * llt.solve(m_f0);
+      m_gf1 = (m_dt * m_dt) * llt.solve(m_f1);
+    }
   } else {
     const Eigen::MatrixXd mbb = block(m_m, m_boundary, m_boundary);
     const Eigen::MatrixXd mbi = block(m_m, m_boundary, m_interior);
@@ -141,6 +164,15 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     kc = 0.5 * (kc + kc.transpose()).eval();
     m_p = (m_dt * m_dt) * llt.solve(kc);
     m_pb = (m_dt * m_dt) * llt.solve(Eigen::MatrixXd(kbi.transpose() * m_g));
+    if (m_force) {
+      // (B): u_B = Z q_I + S B_B^T lambda + S f_B; (I) sees f_I - K^_IB S f_B.
+      m_sf0 = kbb.solve(take(m_f0, m_boundary));
+      m_sf1 = kbb.solve(take(m_f1, m_boundary));
+      m_gf0 = (m_dt * m_dt) *
+              llt.solve(Eigen::VectorXd(take(m_f0, m_interior) - kbi.transpose() * m_sf0));
+      m_gf1 = (m_dt * m_dt) *
+              llt.solve(Eigen::VectorXd(take(m_f1, m_interior) - kbi.transpose() * m_sf1));
+    }
     if (m_c.size()) {
       m_ci = take(m_c, m_interior);
       const Eigen::MatrixXd mii = block(m_m, m_interior, m_interior);
@@ -158,6 +190,11 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
   m_lambda.setZero(3 * m_nc);
   m_lambda_next.setZero(3 * m_nc);
   m_state.assign(m_nc, ReducedContactState::open);
+}
+
+Eigen::VectorXd ComponentIntegrator::external_force(double t) const {
+  if (!m_force) return Eigen::VectorXd::Zero(m_r);
+  return m_f0 + std::cos(m_omega_f * t + m_phi_f) * m_f1;
 }
 
 Eigen::VectorXd ComponentIntegrator::boundary_of(const Eigen::VectorXd& x) const {
@@ -286,6 +323,7 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   m_n = 0;
   m_contact_work = 0.0;
   m_damping_work = 0.0;
+  m_external_work = 0.0;
   m_sweeps = 0;
   m_lambda.setZero();
   m_lambda_next.setZero();
@@ -293,26 +331,38 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   const double h2 = 0.5 * m_dt * m_dt;
   if (!m_massless) {
     // At rest: x_{-1} = x_0 - dt^2/2 M^-1 K^ x_0, so (x_1 - x_{-1})/(2 dt) = 0 without contact.
+    // With a force: x_{-1} = x_0 - dt^2/2 M^-1 (K^ x_0 - f(0)), at rest under the load of t = 0.
     m_x = q0;
     const Eigen::LLT<Eigen::MatrixXd> llt(m_m);
-    m_xp = m_x - h2 * llt.solve(m_k * m_x);
+    if (!m_force)
+      m_xp = m_x - h2 * llt.solve(m_k * m_x);
+    else
+      m_xp = m_x - h2 * llt.solve(Eigen::VectorXd(m_k * m_x - m_f0 - std::cos(m_phi_f) * m_f1));
     gaps_at(boundary_of(m_x), 0.0);
   } else {
     // The boundary at rest before t = 0: u_B^{-1} = -S K^_BI q_I^0 (contact free);
     // at t = 0 the contact is solved on the condensed boundary, lambda_0 with u_B^0.
+    // With a force, the load of t = 0 acts on the boundary from t = 0 on:
+    // u~_B^0 = u_B^{-1} + S f_B(0), its slip relative to u_B^{-1}.
     m_x = take(Eigen::VectorXd(q0), m_interior);
     m_up = m_z * m_x;
-    predict_contact(m_up, m_up, 0.0);
+    const double c0 = std::cos(m_phi_f);
+    if (!m_force)
+      predict_contact(m_up, m_up, 0.0);
+    else
+      predict_contact(Eigen::VectorXd(m_up + m_sf0 + c0 * m_sf1), m_up, 0.0);
     // Slip at t = 0 relative to the structure at rest: the casing's own
     // increment over the step before (the r Omega dt already in m_pred).
     StepReport unused;
     solve_contact(unused);
     m_lambda = m_lambda_next;
     m_u = m_up + m_g * m_lambda;
+    if (m_force) m_u += m_sf0 + c0 * m_sf1;
     const Eigen::MatrixXd mii = block(m_m, m_interior, m_interior);
     const Eigen::LLT<Eigen::MatrixXd> llt(mii);
-    const Eigen::VectorXd force =
+    Eigen::VectorXd force =
         block(m_k, m_interior, m_interior) * m_x + block(m_k, m_interior, m_boundary) * m_u;
+    if (m_force) force -= take(Eigen::VectorXd(m_f0 + c0 * m_f1), m_interior);
     m_xp = m_x - h2 * llt.solve(force);
     gaps_at(m_u, 0.0);
   }
@@ -326,6 +376,11 @@ StepReport ComponentIntegrator::step() {
     m_xn = 2.0 * m_x - m_xp;
     m_xn.noalias() -= m_p * m_x;
     if (m_d.size()) m_xn.noalias() -= m_d * (m_x - m_xp);
+    double cn = 0.0; // cos(omega_f t_n + phi_f)
+    if (m_force) {
+      cn = std::cos(m_omega_f * time() + m_phi_f);
+      m_xn += m_gf0 + cn * m_gf1;
+    }
     const Eigen::VectorXd ut = boundary_of(m_xn);
     predict_contact(ut, boundary_of(m_x), t_next);
     solve_contact(report);
@@ -333,6 +388,7 @@ StepReport ComponentIntegrator::step() {
     if (m_lambda.any()) m_xn.noalias() += m_g * m_lambda;
     const Eigen::VectorXd dx = m_xn - m_xp;
     if (m_lambda.any()) m_contact_work += 0.5 * m_lambda.dot(m_b * boundary_of(dx));
+    if (m_force) m_external_work += 0.5 * (m_f0.dot(dx) + cn * m_f1.dot(dx));
     if (m_c.size()) m_damping_work += dx.dot(m_c.cwiseProduct(dx)) / (4.0 * m_dt);
     m_xp.swap(m_x);
     m_x.swap(m_xn);
@@ -346,13 +402,28 @@ StepReport ComponentIntegrator::step() {
         m_xn.noalias() -= m_pb.middleCols(3 * c, 3) * m_lambda.segment(3 * c, 3);
     if (m_d.size()) m_xn.noalias() -= m_d * (m_x - m_xp);
     if (m_d_diagonal.size()) m_xn -= m_d_diagonal.cwiseProduct(m_x - m_xp);
+    double cn = 0.0; // cos(omega_f t_n + phi_f)
+    if (m_force) {
+      cn = std::cos(m_omega_f * time() + m_phi_f);
+      m_xn += m_gf0 + cn * m_gf1;
+    }
     // (B) at n+1 with the contact on the condensed boundary.
     m_un.noalias() = m_z * m_xn;
+    if (m_force) m_un += m_sf0 + std::cos(m_omega_f * t_next + m_phi_f) * m_sf1;
     predict_contact(m_un, m_u, t_next);
     solve_contact(report);
     if (m_lambda_next.any()) m_un.noalias() += m_g * m_lambda_next;
     // Work of (*) at time n: lambda_n . B (x_{n+1} - x_{n-1}) / 2.
     if (m_lambda.any()) m_contact_work += 0.5 * m_lambda.dot(m_b * (m_un - m_up));
+    if (m_force) {
+      // f(t_n)^T (x_{n+1} - x_{n-1})/2 over the boundary and the interior rows.
+      double w = 0.0;
+      for (int k = 0; k < m_nb; ++k)
+        w += (m_f0(m_boundary[k]) + cn * m_f1(m_boundary[k])) * (m_un(k) - m_up(k));
+      for (int k = 0; k < m_ni; ++k)
+        w += (m_f0(m_interior[k]) + cn * m_f1(m_interior[k])) * (m_xn(k) - m_xp(k));
+      m_external_work += 0.5 * w;
+    }
     if (m_c.size()) {
       m_work_b = m_xn - m_xp;
       m_damping_work += m_work_b.dot(m_ci.cwiseProduct(m_work_b)) / (4.0 * m_dt);

@@ -10,18 +10,27 @@
 // ReducedBasis::boundary_position). The contact rows of node c are
 // B_c = F_c P_c (F_c the rigid casing's frame rows e_n, e_t1, e_t2; P_c
 // picks its ux, uy, uz from q), B = [B_1; ...; B_nc] (3 nc x r), and
-//   M^ q'' + C^ q' + K^ q = B^T lambda,
+//   M^ q'' + C^ q' + K^ q = B^T lambda + f(t),
 // lambda = (lambda_n, lambda_t1, lambda_t2) per contact [force], C^ =
-// diag(c) the modal damping of modal_damping.hpp (zero on the boundary).
-// No other external force; zero initial conditions (start()), or rest at
-// q0 for tests. Every time-n equation is discretized alike,
-//   M^ (x_{n+1} - 2 x_n + x_{n-1})/dt^2 + C^ (x_{n+1} - x_{n-1})/(2 dt) + K^ x_n = B^T lambda_n,
-//   (*)
-// the two schemes differ in which constraint determines lambda_n.
+// diag(c) the modal damping of modal_damping.hpp (zero on the boundary),
+// f(t) an optional external force in reduced coordinates (T^T times the
+// physical load; r entries),
+//   f(t) = f0 + f1 cos(omega_f t + phi_f),
+// f0, f1 each r entries or empty (= 0), applied from t = 0 on; none by
+// default (issue 12 item 5: the pressed oscillator of
+// verification/coulomb_oscillator.hpp needs a normal load and a tangential
+// one). Zero initial conditions (start()), or rest at q0 for tests. Every
+// time-n equation is discretized alike,
+//   M^ (x_{n+1} - 2 x_n + x_{n-1})/dt^2 + C^ (x_{n+1} - x_{n-1})/(2 dt) + K^ x_n
+//     = B^T lambda_n + f(t_n),                                            (*)
+// the two schemes differ in which constraint determines lambda_n. Without
+// a force every step does exactly the arithmetic it did before the force
+// existed (the force terms are skipped, not added as zeros).
 //
 // 1. Mass-carrying boundary (CB, CCM, Guyan; M^ positive definite).
 //    A = M^ + dt/2 C^ (Cholesky once, status checked). The step n -> n+1:
-//      x~ = 2 x_n - x_{n-1} - dt^2 A^-1 K^ x_n - dt A^-1 C^ (x_n - x_{n-1}),
+//      x~ = 2 x_n - x_{n-1} - dt^2 A^-1 K^ x_n - dt A^-1 C^ (x_n - x_{n-1})
+//           + dt^2 A^-1 f(t_n)   (dt^2 A^-1 f0 and dt^2 A^-1 f1 formed once),
 //      x_{n+1} = x~ + dt^2 A^-1 B^T lambda_n,
 //    lambda_n from the contact at x_{n+1}: [g; s] = [g~; s~] + W lambda_n,
 //      W = dt^2 B A^-1 B^T  (3 nc square, an inverse mass times dt^2),
@@ -34,19 +43,25 @@
 // 2. Massless boundary (MacNeal: M^_BB = 0, M^_BI = 0, C^_BB = 0).
 //    Split x = (u_B, q_I). The boundary rows of (*) lose their inertia and
 //    become a static balance at every time level,
-//      K^_BB u_B^n + K^_BI q_I^n = B_B^T lambda_n,                       (B)
+//      K^_BB u_B^n + K^_BI q_I^n = B_B^T lambda_n + f_B(t_n),           (B)
 //    the interior rows stay explicit,
-//      A_I (q_I^{n+1} - 2 q_I^n + q_I^{n-1}) = -dt^2 (K^_II q_I^n + K^_IB u_B^n)
+//      A_I (q_I^{n+1} - 2 q_I^n + q_I^{n-1}) = -dt^2 (K^_II q_I^n + K^_IB u_B^n - f_I(t_n))
 //                                              - dt C^_I (q_I^n - q_I^{n-1}),   (I)
 //    A_I = M^_II + dt/2 C^_I (B_I = 0: contact acts on the boundary only).
+//    f_B, f_I: the boundary and interior rows of f. A force on the boundary
+//    rows has no mass to accelerate: it enters the static balance (B) at
+//    the same time level as lambda_n, u_B^n = -S K^_BI q_I^n + S B_B^T
+//    lambda_n + S f_B(t_n), S = K^_BB^-1 (the boundary jumps with the load,
+//    as a massless node does); the contact is solved against it.
 //    In (I) the code uses (B) to write K^_II q_I^n + K^_IB u_B^n =
-//    K_c q_I^n + K^_IB S B_B^T lambda_n, K_c = K^_II - K^_IB S K^_BI the
-//    condensed stiffness (the same numbers in exact arithmetic, fewer flops).
+//    K_c q_I^n + K^_IB S B_B^T lambda_n + K^_IB S f_B(t_n), K_c = K^_II -
+//    K^_IB S K^_BI the condensed stiffness (the same numbers in exact
+//    arithmetic, fewer flops): the interior sees f_I - K^_IB S f_B.
 //    The step n -> n+1 (NLstep's leapfrog, Monjaraz-Tec, Gross, Krack,
 //    Comput. Struct. 260 (2022) 106698: explicit on the modes, static
 //    condensation of the boundary with the contact solved on it):
 //      q_I^{n+1} from (I), with u_B^n of the previous step's balance;
-//      u~_B = -S K^_BI q_I^{n+1},   S = K^_BB^-1 (Cholesky once; for
+//      u~_B = -S K^_BI q_I^{n+1} + S f_B(t_{n+1}),   S = K^_BB^-1 (Cholesky once; for
 //             MacNeal's CCM coordinates S = R_B, the residual flexibility,
 //             and -S K^_BI = Phi_1B: the kept modes' boundary motion);
 //      u_B^{n+1} = u~_B + S B_B^T lambda_{n+1}, lambda_{n+1} from the
@@ -76,12 +91,14 @@
 // by (x_{n+1} - x_{n-1})/2):
 //   E_{n+1/2} = 1/2 v^T M^ v + 1/2 x_n^T K^ x_{n+1},  v = (x_{n+1} - x_n)/dt,
 //   E_{n+1/2} - E_{n-1/2} = lambda_n^T B (x_{n+1} - x_{n-1})/2
+//                         + f(t_n)^T (x_{n+1} - x_{n-1})/2
 //                         - (x_{n+1} - x_{n-1})^T C^ (x_{n+1} - x_{n-1})/(4 dt),
-// summed into W_contact and W_damp: E = E_0 + W_contact - W_damp closes to
-// the round-off of (*) (of the Cholesky solves, and for MacNeal of (B)).
-// The massless boundary's rows of M^, C^ vanish, so the identity holds for
-// either choice of the start's u_B^{-1}; start() takes the contact-free
-// balance -S K^_BI q_I^0 (the structure at rest before t = 0).
+// summed into W_contact, W_ext and W_damp: E = E_0 + W_ext + W_contact -
+// W_damp closes to the round-off of (*) (of the Cholesky solves, and for
+// MacNeal of (B)). The massless boundary's rows of M^, C^ vanish, so the
+// identity holds for either choice of the start's u_B^{-1}; start() takes
+// the contact-free, load-free balance -S K^_BI q_I^0 (the structure at rest
+// before t = 0; the load f(0) and the contact act from t = 0 on).
 //
 // Costs per contact-free step (dense): CB/CCM 2 r^2 (+ 2 r^2 damped);
 // MacNeal 2 (psi^2 + psi n_B) (+ 3 psi damped, M^_II = I) plus about 30 nc
@@ -122,13 +139,20 @@ struct ComponentIntegratorOptions {
   /// needed); false: on the whole W (the plain way, kept to cross-check).
   bool closing_subset = true;
   CoulombGaussSeidelOptions coulomb;
+  /// External force f(t) = force_constant + force_harmonic cos(force_frequency t
+  /// + force_phase) in reduced coordinates (header, (*)); each vector r finite
+  /// entries or empty (= 0). Both empty: no force (the default).
+  Eigen::VectorXd force_constant; ///< f0 [force]
+  Eigen::VectorXd force_harmonic; ///< f1 [force]
+  double force_frequency = 0.0;   ///< omega_f [rad/s], finite
+  double force_phase = 0.0;       ///< phi_f [rad], finite
 };
 
 class ComponentIntegrator {
 public:
   /// `basis` and `casing` are copied from (not kept). Throws
-  /// std::invalid_argument (bad options, a casing whose boundary indices do
-  /// not exist in the basis) or ComponentIntegrationError (failed
+  /// std::invalid_argument (bad options, a force of the wrong size, a casing
+  /// whose boundary indices do not exist in the basis) or ComponentIntegrationError (failed
   /// factorization; dt >= 2/omega_max without force_step).
   ComponentIntegrator(const ReducedBasis& basis, const RigidCasing& casing,
                       const ComponentIntegratorOptions& options);
@@ -166,6 +190,11 @@ public:
   double energy() const;
   double initial_energy() const { return m_initial_energy; }
   double contact_work() const { return m_contact_work; }
+  /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).
+  double external_work() const { return m_external_work; }
+  bool has_external_force() const { return m_force; }
+  /// f(t), r entries (zeros without a force).
+  Eigen::VectorXd external_force(double t) const;
   double damping_work() const { return m_damping_work; }
   /// W of every step's contact problem (3 nc square; constant over a run).
   const Eigen::MatrixXd& contact_matrix() const { return m_w; }
@@ -212,7 +241,16 @@ private:
   Eigen::VectorXd m_pa, m_la; ///< [g~; s~] and lambda on them
   std::vector<ReducedContactState> m_state;
   CoulombGaussSeidel m_solver;
+  // External force (m_force false: none, the vectors empty).
+  bool m_force = false;
+  double m_omega_f = 0.0, m_phi_f = 0.0;
+  Eigen::VectorXd m_f0, m_f1; ///< f0, f1 (r entries; zeros where not given)
+  /// The force's correction per step: CB dt^2 A^-1 f0, dt^2 A^-1 f1 (r);
+  /// MacNeal dt^2 A_I^-1 (f_I - K^_IB S f_B) of f0, f1 (psi).
+  Eigen::VectorXd m_gf0, m_gf1;
+  Eigen::VectorXd m_sf0, m_sf1; ///< MacNeal: S f_B of f0, f1 (n_B)
   double m_initial_energy = 0.0, m_contact_work = 0.0, m_damping_work = 0.0;
+  double m_external_work = 0.0;
   long m_sweeps = 0;
 };
 

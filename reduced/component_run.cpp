@@ -38,6 +38,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
     history.energy.push_back(energy);
     history.contact_work.push_back(integrator.contact_work());
     history.damping_work.push_back(integrator.damping_work());
+    history.external_work.push_back(integrator.external_work());
   };
   record(integrator.energy());
   s.status = "completed";
@@ -72,16 +73,18 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
     if (check) {
       const double e = integrator.energy();
       const double wc = integrator.contact_work(), wd = integrator.damping_work();
-      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd});
-      const double error = std::abs(e - s.initial_energy - wc + wd);
+      const double we = integrator.external_work(); // 0 without a force: the same arithmetic
+      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd, std::abs(we)});
+      const double error = std::abs(e - s.initial_energy - we - wc + wd);
       s.energy_balance_error = std::max(s.energy_balance_error, error);
       if (sample) record(e);
       if (!(error <= options.balance_tolerance * s.energy_scale)) {
         std::ostringstream m;
         m.precision(6);
         m << "energy balance broken at step " << n << " (t = " << integrator.time()
-          << " s): |E - E0 - W_contact + W_damp| = " << error << " > " << options.balance_tolerance
-          << " x scale " << s.energy_scale << " (instability or solver trouble)";
+          << " s): |E - E0 - W_ext - W_contact + W_damp| = " << error << " > "
+          << options.balance_tolerance << " x scale " << s.energy_scale
+          << " (instability or solver trouble)";
         s.completed = false;
         s.status = m.str();
         break;
@@ -93,6 +96,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   s.integration_cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
   s.final_contact_work = integrator.contact_work();
   s.final_damping_work = integrator.damping_work();
+  s.final_external_work = integrator.external_work();
   s.sweeps = integrator.sweeps();
   return s;
 }

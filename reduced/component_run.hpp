@@ -7,10 +7,10 @@
 // Monitors, checked every step: the integrator's own (a contact solve that
 // fails, a non-finite state: ComponentIntegrationError, caught here and
 // reported as the status with its step); and the energy balance
-// |E - E_0 - W_contact + W_damp| <= balance_tolerance * scale, scale the
-// largest of E, |W_contact|, W_damp so far (checked every energy_every
-// steps: E costs 2 r^2). A run that breaks a monitor stops at that step,
-// completed = false, status says which and when.
+// |E - E_0 - W_ext - W_contact + W_damp| <= balance_tolerance * scale, scale
+// the largest of E, |W_ext|, |W_contact|, W_damp so far (checked every
+// energy_every steps: E costs 2 r^2; W_ext = 0 without an external force). A run that breaks a
+// monitor stops at that step, completed = false, status says which and when.
 
 #include <string>
 #include <vector>
@@ -28,6 +28,7 @@ struct ComponentHistory {
   std::vector<Eigen::VectorXd> lambda; ///< 3 nc per row: n, t1, t2 per contact [force]
   std::vector<double> energy;          ///< E at the rows that are energy checks, NaN at the others
   std::vector<double> contact_work, damping_work;
+  std::vector<double> external_work; ///< W_ext (0 without an external force)
   int n_rows() const { return static_cast<int>(time.size()); }
 };
 
@@ -44,6 +45,7 @@ struct ComponentRunSummary {
   long stick_slip_transitions = 0, stick_contact_steps = 0, slip_contact_steps = 0;
   double initial_energy = 0.0, energy_balance_error = 0.0, energy_scale = 0.0;
   double final_contact_work = 0.0, final_damping_work = 0.0;
+  double final_external_work = 0.0; ///< W_ext at the end (0 without an external force)
   long sweeps = 0;
 };
 
