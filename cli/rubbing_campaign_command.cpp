@@ -129,17 +129,17 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
     const double revolutions = r.method == "full" ? setup.full_revolutions : setup.revolutions;
     run_entry(model, r, revolutions, options.out + "/runs/" + run_name(r), directories);
     const RunSummary& s = r.run.summary;
-    std::printf("%-8s %4d: %s; dt %.4e s (critical %.4e s), %d steps, basis %.2f s, "
+    std::printf("%-8s %4d: %s; dt %.4e s (limit %.4e s), %d steps, basis %.2f s, "
                 "integration %.3f s\n",
                 r.method.c_str(), r.modes, r.error.empty() ? "completed" : r.error.c_str(), s.dt,
-                s.critical_dt, s.steps, s.basis_seconds, s.integration_seconds);
+                r.run.step_limit, s.steps, s.basis_seconds, s.integration_seconds);
     std::fflush(stdout);
   }
   const RubbingCampaignRun* reference =
       setup.full_revolutions > 0.0 && runs.front().error.empty() ? &runs.front() : nullptr;
   std::ostringstream csv;
   csv.precision(10);
-  csv << "method,modes,coordinates,dt,critical_dt,steps_per_sample,steps,completed,basis_s,"
+  csv << "method,modes,coordinates,dt,critical_dt,step_limit,steps_per_sample,steps,completed,basis_s,"
          "integration_s,us_per_step,window_revolutions,e2_response,einf_response,e2_lambda,"
          "einf_lambda,stick_slip_transitions,stick_fraction,slip_fraction,max_cone_violation,"
          "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work\n";
@@ -148,7 +148,7 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
     const ErrorNorms e = reference && r.error.empty() ? error_norms(r, *reference) : ErrorNorms{};
     const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes.size();
     csv << r.method << ',' << r.modes << ',' << s.n_dofs << ',' << s.dt << ',' << s.critical_dt
-        << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
+        << ',' << r.run.step_limit << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
         << s.basis_seconds << ',' << s.integration_seconds << ','
         << 1e6 * s.integration_seconds / std::max(s.steps, 1) << ','
         << (reference ? setup.full_revolutions : 0.0) << ',' << e.e2_response << ','

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
+
 #include "component_integrator.hpp"
 #include "component_run.hpp"
 #include "modal_analysis.hpp"
@@ -19,6 +21,34 @@ namespace {
 /// k of the header: samples at T/N, integration at T/(k N) <= safety x critical.
 int steps_per_sample(double sample_dt, double critical_dt, double safety) {
   return std::max(1, static_cast<int>(std::ceil(sample_dt / (safety * critical_dt))));
+}
+
+/// 2/omega of a massless boundary's interior with the whole boundary held
+/// (u_B = 0: M^_II q'' + K^_II q = 0). Closed contacts constrain u_B, and
+/// constraints only raise the condensed interior's frequencies (interlacing),
+/// so every contact state's limit is at least this; the free modes' limit
+/// (2/omega_psi) holds only while no contact is closed
+/// (component_integrator.hpp, caveat). Measured on the gmsh blade,
+/// MacNeal-50: 5.46e-6 s free, at 4.675e-6 s it blew up once contacts held.
+double held_boundary_critical_dt(const ReducedBasis& basis) {
+  std::vector<char> is_boundary(basis.n_reduced(), 0);
+  for (int k : basis.boundary_position)
+    is_boundary[k] = 1;
+  std::vector<int> interior;
+  for (int k = 0; k < basis.n_reduced(); ++k)
+    if (!is_boundary[k]) interior.push_back(k);
+  const int ni = static_cast<int>(interior.size());
+  Eigen::MatrixXd k(ni, ni), m(ni, ni);
+  for (int i = 0; i < ni; ++i)
+    for (int j = 0; j < ni; ++j) {
+      k(i, j) = basis.stiffness(interior[i], interior[j]);
+      m(i, j) = basis.mass(interior[i], interior[j]);
+    }
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> e(k, m, Eigen::EigenvaluesOnly);
+  if (e.info() != Eigen::Success || !(e.eigenvalues().maxCoeff() > 0.0))
+    throw ReductionError("the interior of the massless-boundary basis has no positive "
+                         "frequency with its boundary held (M^_II or K^_II not definite)");
+  return 2.0 / std::sqrt(e.eigenvalues().maxCoeff());
 }
 
 RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, int dofs,
@@ -74,9 +104,13 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   const double sample_dt = model.period / setup.steps_per_revolution;
   o.dt = sample_dt;
   o.force_step = true; // a probe, only for omega_max
-  const double critical_dt = ComponentIntegrator(basis, casing, o).critical_dt();
+  const double free_critical_dt = ComponentIntegrator(basis, casing, o).critical_dt();
+  const double critical_dt =
+      basis.massless_boundary ? std::min(free_critical_dt, held_boundary_critical_dt(basis))
+                              : free_critical_dt;
   RubbingRun run;
   run.reduced_size = basis.n_reduced();
+  run.step_limit = critical_dt;
   run.steps_per_sample = steps_per_sample(sample_dt, critical_dt, setup.step_safety);
   o.dt = sample_dt / run.steps_per_sample;
   o.force_step = options.force;
@@ -85,6 +119,8 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   ro.steps = n_samples * run.steps_per_sample;
   ro.output_every = run.steps_per_sample * setup.output_every;
   ro.energy_every = ro.output_every;
+  const double rho = o.dt / critical_dt;
+  ro.kinetic_bound = rho < 1.0 ? (1.0 + 1e-8) / (1.0 - rho * rho) : 0.0;
   ComponentHistory h;
   const ComponentRunSummary c =
       run_component(integrator, basis.transformation.row(model.response_dof), ro, h);
@@ -117,7 +153,8 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
   const double omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
   const double sample_dt = model.period / setup.steps_per_revolution;
   RubbingRun run;
-  run.steps_per_sample = steps_per_sample(sample_dt, 2.0 / omega_max, setup.step_safety);
+  run.step_limit = 2.0 / omega_max;
+  run.steps_per_sample = steps_per_sample(sample_dt, run.step_limit, setup.step_safety);
   ComponentReferenceOptions o;
   o.dt = sample_dt / run.steps_per_sample;
   o.steps = n_samples * run.steps_per_sample;

@@ -6,9 +6,10 @@
 //
 // Time steps. T = 2 pi / Omega, N = steps_per_revolution. Every run
 // integrates at dt = T / (k N), k >= 1 the smallest integer with
-// dt <= step_safety x 2/omega_max of the model integrated (MacNeal: of its
-// kept free modes, the boundary being massless; the full model: Lanczos on
-// (K, M)), and samples every k steps (times output_every): every method's
+// dt <= step_safety x 2/omega_max of the model integrated (the full model:
+// Lanczos on (K, M); CB, CCM, Guyan: of (K^, M^); MacNeal: of its interior
+// with the whole boundary held, the stiffest contact state, rubbing_run.cpp),
+// and samples every k steps (times output_every): every method's
 // rows fall at the same instants t = j T / N, so histories compare row by
 // row with no interpolation.
 //
@@ -56,12 +57,12 @@ struct RubbingRun {
   RunSummary summary;
   int steps_per_sample = 1; ///< k of the header
   int reduced_size = 0;     ///< r of a reduced model (0: full)
+  double step_limit = 0.0;  ///< the limit the step was chosen under [s] (MacNeal: boundary held)
 };
 
 /// Runs and streams every row (t, the response dof, gaps, multipliers,
-/// energy, works) to `sink`. Throws ReductionError (bad mode count),
-/// StabilityError (with force only... never: the step is chosen stable),
-/// std::invalid_argument for a bad method.
+/// energy, works) to `sink`. Throws ReductionError (bad mode count) and
+/// std::invalid_argument (a bad method).
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                        const ComponentRowSink& sink);
 

@@ -460,26 +460,37 @@ double ComponentIntegrator::response(const Eigen::Ref<const Eigen::RowVectorXd>&
   return row.dot(q());
 }
 
-double ComponentIntegrator::energy() const {
-  // E_{n-1/2} = 1/2 v^T M^ v + 1/2 x_{n-1}^T K^ x_n, v = (x_n - x_{n-1})/dt.
-  Eigen::VectorXd x, xp;
+void ComponentIntegrator::state_in_basis(Eigen::VectorXd& x, Eigen::VectorXd& xp) const {
   if (!m_massless) {
     x = m_x;
     xp = m_xp;
-  } else {
-    x.resize(m_r);
-    xp.resize(m_r);
-    for (int k = 0; k < m_nb; ++k) {
-      x(m_boundary[k]) = m_u(k);
-      xp(m_boundary[k]) = m_up(k);
-    }
-    for (int k = 0; k < m_ni; ++k) {
-      x(m_interior[k]) = m_x(k);
-      xp(m_interior[k]) = m_xp(k);
-    }
+    return;
   }
+  x.resize(m_r);
+  xp.resize(m_r);
+  for (int k = 0; k < m_nb; ++k) {
+    x(m_boundary[k]) = m_u(k);
+    xp(m_boundary[k]) = m_up(k);
+  }
+  for (int k = 0; k < m_ni; ++k) {
+    x(m_interior[k]) = m_x(k);
+    xp(m_interior[k]) = m_xp(k);
+  }
+}
+
+double ComponentIntegrator::energy() const {
+  // E_{n-1/2} = 1/2 v^T M^ v + 1/2 x_{n-1}^T K^ x_n, v = (x_n - x_{n-1})/dt.
+  Eigen::VectorXd x, xp;
+  state_in_basis(x, xp);
   const Eigen::VectorXd v = (x - xp) / m_dt;
   return 0.5 * v.dot(m_m * v) + 0.5 * xp.dot(m_k * x);
+}
+
+double ComponentIntegrator::kinetic_energy() const {
+  Eigen::VectorXd x, xp;
+  state_in_basis(x, xp);
+  const Eigen::VectorXd v = (x - xp) / m_dt;
+  return 0.5 * v.dot(m_m * v);
 }
 
 } // namespace rsi

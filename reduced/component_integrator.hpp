@@ -188,6 +188,10 @@ public:
   const std::vector<ReducedContactState>& states() const { return m_state; }
   /// E_{n-1/2} (after n steps) [energy unit of the component].
   double energy() const;
+  /// T_{n-1/2} = 1/2 v^T M^ v (the interior only for a massless boundary).
+  /// Mass-carrying: E >= (1 - (omega_max dt/2)^2) T for dt < 2/omega_max
+  /// (minimise E over x_{n-1} at fixed v), contact or not.
+  double kinetic_energy() const;
   double initial_energy() const { return m_initial_energy; }
   double contact_work() const { return m_contact_work; }
   /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).
@@ -209,6 +213,8 @@ private:
   /// Contact node c's ux, uy, uz from the boundary coordinates.
   Eigen::Vector3d node_of(const Eigen::VectorXd& u_boundary, int c) const;
   Eigen::VectorXd boundary_of(const Eigen::VectorXd& x) const;
+  /// x_n and x_{n-1} in the basis' coordinate order (r entries each).
+  void state_in_basis(Eigen::VectorXd& x, Eigen::VectorXd& xp) const;
 
   bool m_massless = false;
   bool m_subset = true;

@@ -89,6 +89,19 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
         s.status = m.str();
         break;
       }
+      const double kinetic = options.kinetic_bound > 0.0 ? integrator.kinetic_energy() : 0.0;
+      if (!(kinetic <= options.kinetic_bound * s.energy_scale) && options.kinetic_bound > 0.0) {
+        std::ostringstream m;
+        m.precision(6);
+        m << "unstable at step " << n << " (t = " << integrator.time()
+          << " s): kinetic energy " << kinetic << " > " << options.kinetic_bound
+          << " x scale " << s.energy_scale
+          << ", the bound of a stable step (the time step is above the stability limit of the "
+             "constrained model)";
+        s.completed = false;
+        s.status = m.str();
+        break;
+      }
     }
   }
   s.integration_seconds =

@@ -54,6 +54,12 @@ struct ComponentRunOptions {
   int output_every = 1;            ///< >= 1
   int energy_every = 1;            ///< >= 1; rows between energy checks carry energy NaN
   double balance_tolerance = 1e-8; ///< relative, in (0, 1)
+  /// With an energy check, also T <= kinetic_bound * scale (0: not checked):
+  /// 1 / (1 - (dt / dt_limit)^2) for a step below the limit dt_limit, the
+  /// bound of ComponentIntegrator::kinetic_energy. A run beyond it has left
+  /// the stable regime even when its balance closes (the discrete energy is
+  /// then indefinite: the solution grows while E stays small).
+  double kinetic_bound = 0.0;
 };
 
 /// Starts `integrator` from zero initial conditions unless `started`, runs,

@@ -40,6 +40,10 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
                   options.force, s);
   s.bladed_disk_critical_dt = s.critical_dt;
 
+  // E >= (1 - rho^2) T, rho = omega_max dt / 2 < 1 (central_difference.hpp);
+  // 1e-8 relative for the round-off of E and T.
+  const double rho = options.dt / s.critical_dt;
+  const double kinetic_bound = rho < 1.0 ? (1.0 + 1e-8) / (1.0 - rho * rho) : 0.0;
   CentralDifference cd(stiffness, mass, options.dt, law, options.damping);
   s.flops_per_step = cd.flops_per_step();
   cd.start(Eigen::VectorXd::Zero(stiffness.rows()));
@@ -112,6 +116,18 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
           << " s): |E - E0 - W_contact + W_damp| = " << error << " > "
           << options.balance_tolerance << " x scale " << s.energy_scale
           << " (instability or solver trouble)";
+        s.completed = false;
+        s.status = m.str();
+        if (sample) emit(energy);
+        break;
+      }
+      const double kinetic = cd.kinetic_energy();
+      if (kinetic_bound > 0.0 && !(kinetic <= kinetic_bound * s.energy_scale)) {
+        std::ostringstream m;
+        m.precision(6);
+        m << "unstable at step " << n << " (t = " << cd.time() << " s): kinetic energy "
+          << kinetic << " > " << kinetic_bound << " x scale " << s.energy_scale
+          << ", the bound of a stable step";
         s.completed = false;
         s.status = m.str();
         if (sample) emit(energy);

@@ -14,7 +14,9 @@
 // scale the largest of |E_0|, |E|, |W_contact|, W_damp so far (E costs a
 // product with K and one with M). A run that breaks one stops at that step
 // (completed = false, status says which and when); the rows before it are
-// already with the sink.
+// already with the sink. With the balance, the kinetic energy is held to
+// the bound of a stable step (CentralDifference::kinetic_energy): the
+// balance alone closes on an unstable run too.
 
 #include <functional>
 
