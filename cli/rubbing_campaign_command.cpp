@@ -19,6 +19,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
@@ -65,6 +67,32 @@ ErrorNorms error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& re
   e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;
   e.einf_lambda = li > 0 ? dli / li : NAN;
   return e;
+}
+
+/// The set-up the report reads (rubbing.json).
+std::string rubbing_json(const RubbingModel& model) {
+  const RubbingSetup& s = model.setup;
+  nlohmann::ordered_json j;
+  j["case"] = model.component_case.case_path;
+  j["component"] = model.component_case.name;
+  j["dofs"] = model.component.n_dofs();
+  j["mass"] = model.component_case.lumped_mass ? "lumped" : "consistent";
+  j["units"] = model.component_case.units;
+  j["contact_nodes"] = model.contact_nodes;
+  j["gap"] = s.oval_gap ? "oval" : "constant";
+  j["gap_value"] = s.gap;
+  j["gap_width"] = s.gap_width;
+  j["friction_coefficient"] = s.friction_coefficient;
+  j["rotation_speed"] = s.rotation_speed;
+  j["revolutions"] = s.revolutions;
+  j["full_revolutions"] = s.full_revolutions;
+  j["steps_per_revolution"] = s.steps_per_revolution;
+  j["output_every"] = s.output_every;
+  j["response"] = model.response_name;
+  j["modal_ratio"] = model.component_case.damping.modal_ratio;
+  j["rayleigh_alpha"] = model.component_case.damping.rayleigh.alpha;
+  j["rayleigh_beta"] = model.component_case.damping.rayleigh.beta;
+  return j.dump(2) + "\n";
 }
 
 std::string run_name(const RubbingCampaignRun& r) {
@@ -142,7 +170,8 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
   csv << "method,modes,coordinates,dt,critical_dt,step_limit,steps_per_sample,steps,completed,basis_s,"
          "integration_s,us_per_step,window_revolutions,e2_response,einf_response,e2_lambda,"
          "einf_lambda,stick_slip_transitions,stick_fraction,slip_fraction,max_cone_violation,"
-         "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work\n";
+         "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work,"
+         "first_mode_hz\n";
   for (const RubbingCampaignRun& r : runs) {
     const RunSummary& s = r.run.summary;
     const ErrorNorms e = reference && r.error.empty() ? error_norms(r, *reference) : ErrorNorms{};
@@ -156,12 +185,14 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
         << s.stick_slip_transitions << ',' << s.stick_contact_steps / contact_steps << ','
         << s.slip_contact_steps / contact_steps << ',' << s.max_cone_violation << ','
         << s.max_stick_slip_residual << ',' << s.energy_balance_error << ',' << s.energy_scale
-        << ',' << s.final_contact_work << ',' << s.final_damping_work << '\n';
+        << ',' << s.final_contact_work << ',' << s.final_damping_work << ','
+        << r.run.first_mode_hz << '\n';
     std::printf("%-8s %4d  e2 response %.4e  einf %.4e  e2 lambda %.4e  einf %.4e\n",
                 r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
                 e.einf_lambda);
   }
   write_text_file(options.out + "/convergence.csv", csv.str());
+  write_text_file(options.out + "/rubbing.json", rubbing_json(model));
   std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
               options.out.c_str(), options.out.c_str());
   const bool all_ok = std::all_of(runs.begin(), runs.end(),

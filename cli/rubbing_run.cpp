@@ -111,6 +111,8 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   RubbingRun run;
   run.reduced_size = basis.n_reduced();
   run.step_limit = critical_dt;
+  if ((options.method == "ccm" || options.method == "macneal") && basis.mode_omega.size() > 0)
+    run.first_mode_hz = basis.mode_omega.minCoeff() / (2.0 * M_PI);
   run.steps_per_sample = steps_per_sample(sample_dt, critical_dt, setup.step_safety);
   o.dt = sample_dt / run.steps_per_sample;
   o.force_step = options.force;
@@ -119,8 +121,6 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   ro.steps = n_samples * run.steps_per_sample;
   ro.output_every = run.steps_per_sample * setup.output_every;
   ro.energy_every = ro.output_every;
-  const double rho = o.dt / critical_dt;
-  ro.kinetic_bound = rho < 1.0 ? (1.0 + 1e-8) / (1.0 - rho * rho) : 0.0;
   ComponentHistory h;
   const ComponentRunSummary c =
       run_component(integrator, basis.transformation.row(model.response_dof), ro, h);

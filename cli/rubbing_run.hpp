@@ -58,6 +58,7 @@ struct RubbingRun {
   int steps_per_sample = 1; ///< k of the header
   int reduced_size = 0;     ///< r of a reduced model (0: full)
   double step_limit = 0.0;  ///< the limit the step was chosen under [s] (MacNeal: boundary held)
+  double first_mode_hz = 0.0; ///< CCM, MacNeal: the lowest kept free-interface mode (0: none)
 };
 
 /// Runs and streams every row (t, the response dof, gaps, multipliers,

@@ -486,11 +486,4 @@ double ComponentIntegrator::energy() const {
   return 0.5 * v.dot(m_m * v) + 0.5 * xp.dot(m_k * x);
 }
 
-double ComponentIntegrator::kinetic_energy() const {
-  Eigen::VectorXd x, xp;
-  state_in_basis(x, xp);
-  const Eigen::VectorXd v = (x - xp) / m_dt;
-  return 0.5 * v.dot(m_m * v);
-}
-
 } // namespace rsi

@@ -162,6 +162,7 @@ public:
   double critical_dt() const { return 2.0 / m_omega_max; }
   double dt() const { return m_dt; }
   int n_contacts() const { return m_nc; }
+  const RigidCasing& casing() const { return m_casing; }
 
   /// Zero initial conditions at t = 0 (the contact at t = 0 solved for a
   /// massless boundary).
@@ -188,10 +189,6 @@ public:
   const std::vector<ReducedContactState>& states() const { return m_state; }
   /// E_{n-1/2} (after n steps) [energy unit of the component].
   double energy() const;
-  /// T_{n-1/2} = 1/2 v^T M^ v (the interior only for a massless boundary).
-  /// Mass-carrying: E >= (1 - (omega_max dt/2)^2) T for dt < 2/omega_max
-  /// (minimise E over x_{n-1} at fixed v), contact or not.
-  double kinetic_energy() const;
   double initial_energy() const { return m_initial_energy; }
   double contact_work() const { return m_contact_work; }
   /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).

@@ -185,7 +185,8 @@ expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" re
 
 # simulate
 expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
-expect 2 "--method: must be full, cb, ccm or guyan, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
+expect 2 "--method: must be full, cb, ccm, guyan or macneal, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
+expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal: component cases), got 'macneal'" -- "$rsi" simulate "$good" --method macneal --modes 10 --out "$work/out"
 expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" simulate "$good" --method cb --modes 639 --out "$work/out"
 expect 2 "--modes: Craig-Chang-Martinez takes 0 to 638" -- "$rsi" simulate "$good" --method ccm --modes 700 --out "$work/out"
 expect 2 "--modes: Guyan reduction keeps no modes" -- "$rsi" simulate "$good" --method guyan --modes 2 --out "$work/out"
@@ -287,6 +288,38 @@ for cmd in modes export reduce; do
   expect 2 "--source: only for a component case" -- "$rsi" "$cmd" "$good" "${extra[@]}" --source "$work/ccx/deck.inp" --out "$work/out"
 done
 expect 2 "--part: the case $work/ccx-good.json has one component, 'tiny', got 'casing'" -- "$rsi" modes "$work/ccx-good.json" --part casing --out "$work/out"
+
+# Rubbing runs of a component case (issue 12): every key of "rubbing" named.
+rubbing_variant() { # NAME RUBBING_JSON [COMPONENT_EXTRA]
+  printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/good"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"%s}, "rubbing": %s}\n' \
+    "${3:-}" "$2" >"$work/rubbing-$1.json"
+}
+rub='"gap": {"oval": {"g_m": 0.1, "width": 0.15}}, "rotation_speed": 100, "revolutions": 1, "steps_per_revolution": 100, "response": {"node": 2, "direction": 2}'
+rubbing_variant mu "{$rub, \"friction_coefficient\": 3}"
+rubbing_variant gap "{\"gap\": {\"elliptic\": 1}, \"friction_coefficient\": 0.1}"
+rubbing_variant width "{\"gap\": {\"oval\": {\"g_m\": 0.1, \"width\": 1.5}}, \"friction_coefficient\": 0.1}"
+rubbing_variant omega "{\"gap\": {\"constant\": 0}, \"friction_coefficient\": 0.1, \"rotation_speed\": 0}"
+rubbing_variant response "{\"gap\": {\"constant\": 0}, \"friction_coefficient\": 0.1, \"rotation_speed\": 100, \"revolutions\": 1, \"steps_per_revolution\": 100, \"response\": {\"node\": 99, \"direction\": 2}}"
+rubbing_variant steps "{\"gap\": {\"constant\": 0}, \"friction_coefficient\": 0.1, \"rotation_speed\": 100, \"revolutions\": 100000, \"steps_per_revolution\": 100000, \"response\": {\"node\": 2, \"direction\": 2}}"
+rubbing_variant unknown "{$rub, \"friction_coefficient\": 0.1, \"colour\": 1}"
+rubbing_variant mass "{$rub, \"friction_coefficient\": 0.1}" ', "mass": "diagonal"'
+rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
+rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
+rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
+expect 2 "key 'rubbing': missing (a contact run of a component needs" -- "$rsi" simulate "$work/ccx-good.json" --out "$work/out"
+expect 2 "key 'rubbing.friction_coefficient': must be in [0, 2], got 3" -- "$rsi" simulate "$work/rubbing-mu.json" --out "$work/out"
+expect 2 "key 'rubbing.gap': must be {\"oval\": {\"g_m\": .., \"width\": ..}} or {\"constant\": g0}" -- "$rsi" simulate "$work/rubbing-gap.json" --out "$work/out"
+expect 2 "key 'rubbing.gap.oval.width': must be in (0, 1), got 1.5" -- "$rsi" simulate "$work/rubbing-width.json" --out "$work/out"
+expect 2 "key 'rubbing.rotation_speed': must be in (0, 100000] rad/s, got 0" -- "$rsi" simulate "$work/rubbing-omega.json" --out "$work/out"
+expect 2 "key 'rubbing.response': node 99 direction 2 is not a dof of the model" -- "$rsi" simulate "$work/rubbing-response.json" --out "$work/out"
+expect 2 "key 'rubbing.revolutions': revolutions x steps_per_revolution must be at most 2147483647" -- "$rsi" simulate "$work/rubbing-steps.json" --out "$work/out"
+expect 2 "key 'rubbing.colour': unknown key" -- "$rsi" simulate "$work/rubbing-unknown.json" --out "$work/out"
+expect 2 "key 'component.mass': must be \"consistent\" or \"lumped\" (HRZ), got \"diagonal\"" -- "$rsi" simulate "$work/rubbing-mass.json" --out "$work/out"
+expect 2 "key 'rubbing.campaign': missing, nothing to run" -- "$rsi" campaign "$work/rubbing-no-campaign.json" --out "$work/out"
+expect 2 "--jobs: a component case's campaign runs one run at a time" -- "$rsi" campaign "$work/rubbing-campaign.json" --jobs 2 --out "$work/out"
+expect 2 "--target-e2: only for the paper's case" -- "$rsi" campaign "$work/rubbing-campaign.json" --target-e2 0.1 --out "$work/out"
+expect 2 "key 'rubbing.campaign.runs[0].method': must be \"cb\", \"ccm\" or \"macneal\", got \"guyan\"" -- "$rsi" campaign "$work/rubbing-campaign-method.json" --out "$work/out"
+expect 2 "--full-field: only for the paper's case" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --full-field --out "$work/out"
 
 # Matrix Market folders in rsi export's layout (the good one written by rsi export).
 "$rsi" export "$work/ccx-good.json" --out "$work/mm" >/dev/null

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -158,5 +159,78 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
               nodes.front(), std::sqrt(num / den), dmax / rmax);
 }
 
+
+// The blow-up the energy balance cannot see (rsi campaign on
+// data/cases/blade3d-rubbing.json, MacNeal-50 at T/1000, before the
+// held-boundary limit): 4.675e-6 s is below the free modes' limit 2/omega_psi
+// but above the limit of the interior with the boundary held, which a
+// closed contact enforces. The run then grows without bound while
+// E = E0 + W_contact closes: the moving casing's work grows with it. The
+// runaway test of run_component (a contact node's normal displacement above
+// its radius) must stop it; at T/3000, below the held limit, the same run
+// completes with a physical response.
+TEST(ComponentRubbing, MacNealPastItsHeldBoundaryLimitIsStoppedAsARunaway) {
+  if (!executable_on_path("gmsh")) GTEST_SKIP() << "gmsh is not on PATH (Debian package gmsh)";
+  if (!executable_on_path("ccx"))
+    GTEST_SKIP() << "ccx is not on PATH (Debian package calculix-ccx)";
+  const std::string path = RSI_SOURCE_DIR "/data/cases/blade3d-rubbing.json";
+  std::ifstream in(path);
+  const ComponentCase cc = parse_component_case(nlohmann::json::parse(in), path);
+  ASSERT_TRUE(cc.rubbing.has_value());
+  const Component blade = load_component(cc, {"", cache_dir()});
+  std::vector<int> nodes;
+  for (int d : blade.boundary)
+    if (nodes.empty() || nodes.back() != blade.dofs[d].node) nodes.push_back(blade.dofs[d].node);
+  const double omega = cc.rubbing->rotation_speed, period = 2.0 * M_PI / omega;
+  const RigidCasing casing =
+      rigid_casing_of(blade, nodes, oval_casing_gap(cc.rubbing->gap), omega);
+  const ReducedBasis basis = reduce(blade.stiffness, blade.mass, blade.boundary, "macneal", 50);
+  // Held limit: u_B = 0 leaves M^_II q'' + K^_II q = 0 (M^_II = I for MacNeal).
+  std::vector<char> is_boundary(basis.n_reduced(), 0);
+  for (int k : basis.boundary_position)
+    is_boundary[k] = 1;
+  std::vector<int> interior;
+  for (int k = 0; k < basis.n_reduced(); ++k)
+    if (!is_boundary[k]) interior.push_back(k);
+  Eigen::MatrixXd kii(interior.size(), interior.size());
+  for (size_t i = 0; i < interior.size(); ++i)
+    for (size_t j = 0; j < interior.size(); ++j)
+      kii(i, j) = basis.stiffness(interior[i], interior[j]);
+  const double held_dt =
+      2.0 / std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(kii).eigenvalues().maxCoeff());
+  double radius = 0.0;
+  for (int c = 0; c < casing.n_contacts(); ++c)
+    radius = std::max(radius, casing.radius(c));
+
+  const auto run = [&](int steps_per_revolution) {
+    ComponentIntegratorOptions o;
+    o.mu = cc.rubbing->friction_coefficient;
+    o.dt = period / steps_per_revolution;
+    ComponentIntegrator integrator(basis, casing, o); // refuses dt >= the free limit
+    EXPECT_LT(o.dt, integrator.critical_dt());
+    ComponentRunOptions ro;
+    ro.steps = steps_per_revolution; // one revolution: both closings of the oval
+    ComponentHistory h;
+    const ComponentRunSummary s =
+        run_component(integrator, basis.transformation.row(blade.boundary[1]), ro, h);
+    double peak = 0.0;
+    for (double x : h.response)
+      peak = std::max(peak, std::abs(x));
+    std::printf("MacNeal-50, dt %.4e s (free limit %.4e s, held %.4e s): %d steps, %s; peak "
+                "response %.3e mm\n",
+                o.dt, integrator.critical_dt(), held_dt, s.steps, s.status.c_str(), peak);
+    return std::make_pair(s, peak);
+  };
+  ASSERT_GT(period / 1000, held_dt) << "the blade no longer shows the case this test is about";
+  const auto stable = run(3000);
+  ASSERT_TRUE(stable.first.completed) << stable.first.status;
+  // A physical response: well below the radius the runaway test uses (the
+  // tip moves by millimetres; radius 250 mm).
+  EXPECT_LT(stable.second, 0.1 * radius);
+  const auto unstable = run(1000);
+  EXPECT_FALSE(unstable.first.completed);
+  EXPECT_NE(unstable.first.status.find("runaway"), std::string::npos) << unstable.first.status;
+  EXPECT_LT(unstable.first.steps, 1000);
+}
 } // namespace
 } // namespace rsi

@@ -154,11 +154,6 @@ double CentralDifference::energy() const {
   return 0.5 * v.dot(m_m * v) + 0.5 * m_u_prev.dot(m_ku);
 }
 
-double CentralDifference::kinetic_energy() const {
-  const Eigen::VectorXd v = (m_u - m_u_prev) / m_dt;
-  return 0.5 * v.dot(m_m * v);
-}
-
 void CentralDifference::set_force(const Eigen::Ref<const Eigen::VectorXd>& f) {
   if (f.size() != m_m.rows())
     throw std::invalid_argument("CentralDifference: the force must have one entry per dof");

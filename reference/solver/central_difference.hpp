@@ -154,10 +154,6 @@ public:
   const std::vector<ContactClass>& contact_classes() const { return m_classes; }
   const Eigen::VectorXd& gap() const { return m_gap; } ///< gaps at u_n
   double energy() const; ///< E_{n-1/2} [J], computed from its definition
-  /// T_{n-1/2} = 1/2 v^T M v, v = (u_n - u_{n-1})/dt [J]. For dt < 2/omega_max,
-  /// E_{n-1/2} >= (1 - (omega_max dt/2)^2) T_{n-1/2} (minimise E over u_{n-1}
-  /// at fixed v), contact or not: a T above that bound is an instability.
-  double kinetic_energy() const;
   double initial_energy() const { return m_initial_energy; }
   double external_work() const { return m_external_work; }
   double contact_work() const { return m_contact_work; }

@@ -14,9 +14,10 @@
 // scale the largest of |E_0|, |E|, |W_contact|, W_damp so far (E costs a
 // product with K and one with M). A run that breaks one stops at that step
 // (completed = false, status says which and when); the rows before it are
-// already with the sink. With the balance, the kinetic energy is held to
-// the bound of a stable step (CentralDifference::kinetic_energy): the
-// balance alone closes on an unstable run too.
+// already with the sink. Every step also the runaway test: a contact node
+// whose normal displacement |g_c - g0_c(t)| exceeds its radius has left the
+// small-displacement model (a blow-up the balance may not see: an unstable
+// run's energy grows with the moving casing's work and the balance closes).
 
 #include <functional>
 
