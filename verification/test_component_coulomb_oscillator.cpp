@@ -70,21 +70,19 @@ RigidCasing pressed_plane() {
                      {CasingGapKind::constant, 0.0, 0.0, 0.15}, 0.0);
 }
 
-/// The oscillator's node as a reduced model, its spring on `dof`: Craig-
-/// Bampton with every dof on the boundary and 0 modes, T = I, K^ = K, M^ = M,
-/// written by hand: reduce(..., "cb", 0) of a component without interior dofs
-/// hands an empty K_II to CHOLMOD, which fails ("invalid xtype") and then
-/// crashes (a bug of reduced/bases, not fixed here); this basis needs no
-/// factorization at all.
+/// The oscillator's node as a reduced model, its spring on `dof`:
+/// reduce(..., "cb", 0) with every dof on the boundary (no interior: the
+/// constraint modes are empty, T = I, K^ = K, M^ = M, asserted here).
 ReducedBasis node_model(const coulomb::Oscillator& o, int dof) {
-  ReducedBasis b;
-  b.method = "cb";
-  b.n_modes = 0;
-  b.transformation = Eigen::MatrixXd::Identity(3, 3);
-  b.stiffness = Eigen::MatrixXd::Zero(3, 3);
-  b.stiffness(dof, dof) = o.stiffness;
-  b.mass = o.mass * Eigen::MatrixXd::Identity(3, 3);
-  b.boundary_position = {0, 1, 2};
+  Eigen::SparseMatrix<double> k(3, 3), m(3, 3);
+  k.insert(dof, dof) = o.stiffness;
+  for (int i = 0; i < 3; ++i)
+    m.insert(i, i) = o.mass;
+  const ReducedBasis b = reduce(k, m, {0, 1, 2}, "cb", 0);
+  EXPECT_EQ(b.transformation, Eigen::MatrixXd::Identity(3, 3));
+  EXPECT_EQ(b.stiffness, Eigen::MatrixXd(k));
+  EXPECT_EQ(b.mass, Eigen::MatrixXd(m));
+  EXPECT_EQ(b.boundary_position, (std::vector<int>{0, 1, 2}));
   return b;
 }
 

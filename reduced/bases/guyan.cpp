@@ -108,6 +108,9 @@ const char* const interior_stiffness_remedy =
     "the boundary must hold the part against every rigid motion (is the hub clamped?)";
 
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p) {
+  // Every dof on the boundary: no interior to solve for (T = I); CHOLMOD
+  // takes no empty matrix.
+  if (p.n_interior() == 0) return Eigen::MatrixXd(0, p.n_boundary());
   const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
   const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
   return solve_positive_definite(k_ii, -Eigen::MatrixXd(k_ib), interior_stiffness_name(p),
