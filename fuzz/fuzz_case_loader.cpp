@@ -22,6 +22,9 @@
 #include <string>
 #include <typeinfo>
 
+#include <gsl/gsl_errno.h>
+
+#include "blade_geometry.hpp"
 #include "case_file.hpp"
 
 namespace {
@@ -71,6 +74,10 @@ void check_accepted(const rsi::Case& c) {
   require(positive_finite(c.time.step), "time.step > 0");
   require(std::isfinite(c.time.duration) && c.time.duration >= c.time.step, "time.duration");
   require(c.time.output_every >= 1, "time.output_every >= 1");
+  // The blade as a whole: its radius grows from the rim to the tip.
+  const rsi::BladeGeometry g = rsi::blade_geometry(c.bladed_disk);
+  for (std::size_t i = 2; i < g.nodes.size(); ++i)
+    require(g.nodes[i].norm() > g.nodes[i - 1].norm(), "blade radius grows from rim to tip");
   for (const rsi::CampaignRun& run : c.campaign) {
     require(run.method == "cb" || run.method == "ccm" || run.method == "guyan", "campaign method");
     require(run.modes >= 0 && run.modes <= 100000, "campaign modes in [0, 100000]");
@@ -78,6 +85,13 @@ void check_accepted(const rsi::Case& c) {
 }
 
 } // namespace
+
+// GSL's default handler aborts; the CLI turns it off once (cli/main.cpp) and
+// checks every status, so the loader is fuzzed the same way.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  gsl_set_error_handler_off();
+  return 0;
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -160,6 +160,9 @@ fi
 
 # modes
 expect 2 "clearance must be positive" -- "$rsi" modes "$work/clearance.json" --out "$work/out"
+# The blade as a whole (issue 13, class 7): every key in range, 1000 elements
+# at the default 1 degree kink turn it by 1000 degrees, a spiral.
+expect 2 "keys 'bladed_disk.n_blade_elements' and 'bladed_disk.kink_angle_deg': the blade curls back" -- "$rsi" modes "$src/fuzz/corpus/spiral-blade.json" --out "$work/out"
 expect 2 "--count: must be in [1, 682]" -- "$rsi" modes "$good" --count 1000 --out "$work/out"
 expect 2 "--count: must be in [1, 156]" -- "$rsi" modes "$good" --part casing --count 157 --out "$work/out"
 expect 2 "--count: must be an integer in [1, the part's number of dofs], got '0'" -- "$rsi" modes "$good" --count 0 --out "$work/out"

@@ -1,4 +1,5 @@
 #include "case_file.hpp"
+#include "blade_geometry.hpp"
 #include "case_json.hpp"
 
 #include <cmath>
@@ -50,6 +51,30 @@ CasingSpec read_casing(ObjectReader r, double tip_radius) {
   return c;
 }
 
+/// The blade as a whole (issue 13, class 7): each key in range can still
+/// make a blade that curls back (many elements at a kink: 1000 x 1 degree
+/// turns it by 1000 degrees, the tip found on R_t after a spiral through
+/// the casing and the neighbouring blades). A blade whose radius grows
+/// strictly from the rim to the tip stays between rim and tip radius, so
+/// inside the casing, and its rotated copies (the other sectors) never meet
+/// it: each radius is crossed once per blade, at angles a pitch apart.
+void check_blade_shape(const BladedDiskSpec& spec, const std::string& source) {
+  const BladeGeometry g = blade_geometry(spec);
+  for (size_t i = 2; i < g.nodes.size(); ++i)
+    if (!(g.nodes[i].norm() > g.nodes[i - 1].norm())) {
+      std::ostringstream m;
+      m.precision(6);
+      m << source << ": keys 'bladed_disk.n_blade_elements' and 'bladed_disk.kink_angle_deg': the "
+        << "blade curls back (node " << i - 1 << " of " << g.nodes.size() - 2
+        << " lies at radius " << g.nodes[i].norm() << " m, not beyond the previous node's "
+        << g.nodes[i - 1].norm() << " m; the kinks turn it by "
+        << std::abs(spec.kink_angle) * spec.n_blade_elements / deg
+        << " degrees in all); the radius must grow from rim to tip: use fewer elements or a "
+           "smaller |kink angle|";
+      throw CaseError(m.str());
+    }
+}
+
 } // namespace
 
 /// Counts derived from the time keys must fit what a run counts with (int
@@ -90,6 +115,7 @@ Case parse_case(const json& document, const std::string& source) {
 
   c.bladed_disk = read_bladed_disk(top.object("bladed_disk"));
   c.casing = read_casing(top.object("casing"), c.bladed_disk.tip_radius);
+  check_blade_shape(c.bladed_disk, c.source);
 
   ObjectReader op = top.object("operating_point");
   c.operating_point.rotation_speed = op.number("rotation_speed", {0.0, 1e5, false, false, "rad/s"});
