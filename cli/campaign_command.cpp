@@ -21,9 +21,9 @@
 #include "error_norms.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
-#include "report_script.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
+#include "report_script.hpp"
 #include "run_outputs.hpp"
 #include "staged_output.hpp"
 
@@ -58,8 +58,7 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
 int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
-    return run_rubbing_campaign(options, parse_component_case(document, options.case_path),
-                                output);
+    return run_rubbing_campaign(options, parse_component_case(document, options.case_path), output);
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");

@@ -17,10 +17,10 @@
 #include <gsl/gsl_errno.h>
 
 #include "case_file.hpp"
-#include "interruption.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "component.hpp"
+#include "interruption.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
 #include "reduced_integrator.hpp"

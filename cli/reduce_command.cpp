@@ -7,8 +7,8 @@
 
 #include "commands.hpp"
 #include "component_input.hpp"
-#include "output_files.hpp"
 #include "critical_step.hpp"
+#include "output_files.hpp"
 #include "reduced_run.hpp"
 #include "reduction.hpp"
 #include "staged_output.hpp"
