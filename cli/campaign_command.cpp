@@ -21,10 +21,11 @@
 #include "error_norms.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
-#include "report_script.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
+#include "report_script.hpp"
 #include "run_outputs.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -54,11 +55,10 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
 
 } // namespace
 
-int run_campaign(const CampaignOptions& options, OutputDirectories& directories) {
+int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
-    return run_rubbing_campaign(options, parse_component_case(document, options.case_path),
-                                directories);
+    return run_rubbing_campaign(options, parse_component_case(document, options.case_path), output);
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
@@ -84,7 +84,7 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
                                               : "[0, " + std::to_string(most) + "] for " +
                                                     r.method + " (dofs minus boundary dofs)"));
   }
-  directories.make(options.out, "--out");
+  const std::string stage = output.open(options.out, "--out", campaign_output_set());
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.
   std::vector<CampaignResult> runs(c.campaign.size() + 1);
@@ -99,8 +99,8 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
   // longer grows with the histories (issue 13: hundreds of MB at
   // output_every 1).
   for (CampaignResult& r : runs) {
-    const std::string dir = options.out + "/runs/" + run_name(r.run);
-    directories.make(dir, "--out");
+    const std::string dir = stage + "/runs/" + run_name(r.run);
+    output.make(dir);
     r.history = std::make_unique<StreamedTextFile>(dir + "/history.csv");
     // The 2D Coulomb law adds one tangential multiplier a tip (run_outputs.hpp).
     const int n_tangents = c.operating_point.friction_law == FrictionLaw::coulomb ? 1 : 0;
@@ -149,7 +149,7 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
   csv << "method,modes,e2,e_inf,wall_s,speedup\n";
   for (size_t i = 0; i < runs.size(); ++i) {
     const CampaignResult& r = runs[i];
-    const std::string dir = options.out + "/runs/" + run_name(r.run);
+    const std::string dir = stage + "/runs/" + run_name(r.run);
     if (!r.error.empty()) {
       std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", run_name(r.run).c_str(),
                    r.error.c_str());
@@ -165,10 +165,10 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
         << "," << r.result.summary.wall_seconds << ","
         << reference.summary.wall_seconds / r.result.summary.wall_seconds << "\n";
   }
-  write_text_file(options.out + "/convergence.csv", csv.str());
+  write_text_file(stage + "/convergence.csv", csv.str());
   // Paper Fig. 3 analogue: the lowest 8 families of the bladed disk.
   write_text_file(
-      options.out + "/modes-bladed-disk.csv",
+      stage + "/modes-bladed-disk.csv",
       modes_table(c, "bladed-disk", std::min(8 * c.bladed_disk.n_blades, disk_dofs)).csv);
 
   std::printf("%-6s %6s %10s %10s %9s %8s\n", "method", "modes", "e2", "e_inf", "wall_s",
@@ -198,13 +198,13 @@ int run_campaign(const CampaignOptions& options, OutputDirectories& directories)
                                   [](const CampaignResult& r) { return r.error.empty(); });
   if (options.report) {
     std::fflush(stdout); // the table before the script's own lines
-    const int status = run_report_script("make_campaign_report.py", options.out);
+    const int status = run_report_script("make_campaign_report.py", stage);
     if (status != 0) {
-      std::fprintf(
-          stderr,
-          "rsi: error: the report generator %s/make_campaign_report.py failed (status %d); "
-          "the runs and convergence.csv are written; rerun it by hand or use --no-report\n",
-          RSI_REPORTS_DIR, status);
+      // Exit 1 publishes nothing (staged_output.hpp): --out stays as it was.
+      std::fprintf(stderr,
+                   "rsi: error: the report generator %s/make_campaign_report.py failed (status "
+                   "%d); nothing was written to --out %s; fix it or use --no-report\n",
+                   RSI_REPORTS_DIR, status, options.out.c_str());
       return 1;
     }
     std::printf("report: %s/report.md\n", options.out.c_str());

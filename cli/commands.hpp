@@ -15,7 +15,7 @@
 
 namespace rsi {
 
-class OutputDirectories;
+class StagedOutput;
 
 /// A command-line value outside its allowed range.
 class UsageError : public std::invalid_argument {
@@ -87,22 +87,22 @@ struct ModesTable {
 };
 ModesTable modes_table(const Case& c, const std::string& part, int count);
 
-int run_modes(const ModesOptions& options, OutputDirectories& directories);
-int run_export(const ExportOptions& options, OutputDirectories& directories);
+int run_modes(const ModesOptions& options, StagedOutput& output);
+int run_export(const ExportOptions& options, StagedOutput& output);
 int run_calibrate(const CalibrateOptions& options);
-int run_simulate(const SimulateOptions& options, OutputDirectories& directories);
+int run_simulate(const SimulateOptions& options, StagedOutput& output);
 /// rsi simulate on a component case with a "rubbing" object.
 int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
-                           OutputDirectories& directories);
-int run_reduce(const ReduceOptions& options, OutputDirectories& directories);
-int run_campaign(const CampaignOptions& options, OutputDirectories& directories);
+                           StagedOutput& output);
+int run_reduce(const ReduceOptions& options, StagedOutput& output);
+int run_campaign(const CampaignOptions& options, StagedOutput& output);
 /// rsi campaign on a component case (rubbing.campaign).
 int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
-                         OutputDirectories& directories);
+                         StagedOutput& output);
 /// history.csv of a component run: t, the response dof, then the columns of
 /// history_csv_header with two tangents per contact.
 std::string component_history_header(const std::string& response_name, int n_contacts);
 void append_component_history_row(std::string& out, const HistoryRow& row, double response);
-int run_modal_campaign(const ModalCampaignOptions& options, OutputDirectories& directories);
+int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output);
 
 } // namespace rsi

@@ -9,6 +9,7 @@
 #include "output_files.hpp"
 #include "rubbing_run.hpp"
 #include "run_outputs.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 
@@ -29,15 +30,15 @@ void append_component_history_row(std::string& out, const HistoryRow& row, doubl
 }
 
 int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
-                           OutputDirectories& directories) {
+                           StagedOutput& output) {
   if (options.full_field)
     throw UsageError("--full-field: only for the paper's case (a component case writes the "
                      "response dof of its 'rubbing.response')");
   if (options.method == "full" && options.modes != 0)
     throw UsageError("--modes: only for a reduced method; drop it");
   const RubbingModel model = load_rubbing_model(c, options.load);
-  directories.make(options.out, "--out");
-  StreamedTextFile history_file(options.out + "/history.csv");
+  const std::string dir = output.open(options.out, "--out", simulate_output_set());
+  StreamedTextFile history_file(dir + "/history.csv");
   std::string line;
   int rows = 0;
   const int nc = static_cast<int>(model.contact_nodes.size());
@@ -56,7 +57,7 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
   throw_if_interrupted();
   if (rows == 0) history_file.append(component_history_header(model.response_name, nc));
   history_file.commit();
-  write_text_file(options.out + "/summary.json", summary_json(result.summary));
+  write_text_file(dir + "/summary.json", summary_json(result.summary));
   const RunSummary& s = result.summary;
   std::printf("%s: method %s%s, %d %s, %d contact nodes, %d of %d steps in %.3f s "
               "(integration %.3f s, basis %.3f s)\n",

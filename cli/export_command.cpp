@@ -10,6 +10,7 @@
 #include "component_input.hpp"
 #include "output_files.hpp"
 #include "paper_components.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -32,29 +33,29 @@ std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
   return csv.str();
 }
 
-void write_component(const std::string& dir, const Component& c) {
+/// Writes into `dir` (staged); `shown` is the folder named in the message.
+void write_component(const std::string& dir, const std::string& shown, const Component& c) {
   write_symmetric_matrix_market(dir + "/K.mtx", c.stiffness);
   write_symmetric_matrix_market(dir + "/M.mtx", c.mass);
   write_text_file(dir + "/dofs.csv", dofs_csv(c.dofs));
   write_text_file(dir + "/nodes.csv", nodes_csv(c.nodes));
   std::printf("wrote %s/{K.mtx,M.mtx,dofs.csv,nodes.csv}: %d dofs, %zu nodes, %zu boundary dofs\n",
-              dir.c_str(), c.n_dofs(), c.nodes.size(), c.boundary.size());
+              shown.c_str(), c.n_dofs(), c.nodes.size(), c.boundary.size());
 }
 
 } // namespace
 
-int run_export(const ExportOptions& options, OutputDirectories& directories) {
+int run_export(const ExportOptions& options, StagedOutput& output) {
   std::vector<Component> components;
   ComponentInput first = load_component_input(options.case_path, "", options.load);
   const bool paper = !first.component_case.has_value();
   components.push_back(std::move(first.component));
   if (paper) components.push_back(load_component_input(options.case_path, "casing", options.load).component);
-  // Every directory before any file: an unwritable one leaves no part written.
-  directories.make(options.out, "--out");
+  const std::string dir = output.open(options.out, "--out", export_output_set());
   for (const Component& c : components)
-    directories.make(options.out + "/" + c.name, "--out");
+    output.make(dir + "/" + c.name);
   for (const Component& c : components)
-    write_component(options.out + "/" + c.name, c);
+    write_component(dir + "/" + c.name, options.out + "/" + c.name, c);
   return 0;
 }
 

@@ -17,14 +17,15 @@
 #include <gsl/gsl_errno.h>
 
 #include "case_file.hpp"
-#include "interruption.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "component.hpp"
+#include "interruption.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
 #include "reduced_integrator.hpp"
 #include "reference_run.hpp"
+#include "staged_output.hpp"
 
 namespace {
 
@@ -277,29 +278,39 @@ int main(int argc, char** argv) {
                          "reduce, simulate, campaign or modal-campaign (see rsi --help)\n");
     return 2;
   }
-  // Status of the subcommand: the exception kinds map to exit 2 (bad input) or 3 (numerical).
-  rsi::OutputDirectories directories;
+  // Everything a command writes goes to a staging folder, published as one
+  // set only when the command returns 0 or 3 (staged_output.hpp).
+  rsi::StagedOutput output;
   // Exit status by exception kind: 2 bad input, 3 numerical failure, 1 else.
   auto failure = [](const char* kind, const std::exception& e, int status) {
     std::fprintf(stderr, "rsi: %s: %s\n", kind, e.what());
     return status;
   };
+  auto command = [&]() -> int {
+    if (*modes_cmd) return rsi::run_modes(modes, output);
+    if (*export_cmd) return rsi::run_export(export_options, output);
+    if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
+    if (*simulate_cmd) {
+      // An option the method does not use is refused, not ignored (cb,
+      // ccm and guyan check theirs when the basis is built).
+      if (simulate_modes->count() > 0 && simulate.method == "full")
+        throw rsi::UsageError("--modes: only for a reduced method (the full reference keeps "
+                              "no modes); drop it");
+      return rsi::run_simulate(simulate, output);
+    }
+    if (*reduce_cmd) return rsi::run_reduce(reduce, output);
+    if (*campaign_cmd) return rsi::run_campaign(campaign, output);
+    if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, output);
+    return 1;
+  };
   auto run = [&]() -> int {
     try {
-      if (*modes_cmd) return rsi::run_modes(modes, directories);
-      if (*export_cmd) return rsi::run_export(export_options, directories);
-      if (*calibrate_cmd) return rsi::run_calibrate(calibrate);
-      if (*simulate_cmd) {
-        // An option the method does not use is refused, not ignored (cb,
-        // ccm and guyan check theirs when the basis is built).
-        if (simulate_modes->count() > 0 && simulate.method == "full")
-          throw rsi::UsageError("--modes: only for a reduced method (the full reference keeps "
-                                "no modes); drop it");
-        return rsi::run_simulate(simulate, directories);
-      }
-      if (*reduce_cmd) return rsi::run_reduce(reduce, directories);
-      if (*campaign_cmd) return rsi::run_campaign(campaign, directories);
-      if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, directories);
+      const int status = command();
+      // 0, or 3 returned by a run that stopped (its history and summary say
+      // why): this run's output replaces the previous one. Exit 1 (a failed
+      // report script) publishes nothing.
+      if (status == 0 || status == 3) output.publish();
+      return status;
     } catch (const rsi::Interrupted& e) {
       return failure("error", e, e.exit_status());
     } catch (const rsi::CaseError& e) {
@@ -325,10 +336,10 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       return failure("error", e, 1);
     }
-    return 1;
   };
   const int status = run();
-  // A failed command leaves no output directory it created and left empty.
-  if (status != 0) directories.remove_empty();
+  // Unless published: the staging folder and the lock removed, and every
+  // directory the command created and left empty (--out as it was).
+  output.abandon();
   return status;
 }

@@ -19,6 +19,7 @@
 #include "partition.hpp"
 #include "reduction.hpp"
 #include "report_script.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -36,7 +37,7 @@ double hz(double omega_squared) {
 
 } // namespace
 
-int run_modal_campaign(const ModalCampaignOptions& options, OutputDirectories& directories) {
+int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output) {
   const ComponentInput input = load_component_input(options.case_path, "", options.load);
   if (!input.component_case || !input.component_case->modal_campaign)
     throw UsageError(input.case_source +
@@ -137,20 +138,21 @@ int run_modal_campaign(const ModalCampaignOptions& options, OutputDirectories& d
   summary["full_hz"] = full_hz;
   summary["full_max_relative_residual"] = full_residual.maxCoeff();
 
-  directories.make(options.out, "--out");
-  write_text_file(options.out + "/modal_convergence.csv", table.str());
-  write_text_file(options.out + "/modal_errors.csv", errors.str());
-  write_text_file(options.out + "/modal_summary.json", summary.dump(2) + "\n");
+  const std::string stage = output.open(options.out, "--out", modal_campaign_output_set());
+  write_text_file(stage + "/modal_convergence.csv", table.str());
+  write_text_file(stage + "/modal_errors.csv", errors.str());
+  write_text_file(stage + "/modal_summary.json", summary.dump(2) + "\n");
   std::printf("wrote %s/{modal_convergence.csv,modal_errors.csv,modal_summary.json}\n",
               options.out.c_str());
   if (options.report) {
     std::fflush(stdout);
-    const int status = run_report_script("make_modal_report.py", options.out);
+    const int status = run_report_script("make_modal_report.py", stage);
     if (status != 0) {
+      // Exit 1 publishes nothing (staged_output.hpp): --out stays as it was.
       std::fprintf(stderr,
                    "rsi: error: the report generator make_modal_report.py failed (status %d); "
-                   "the tables are written; use --no-report to skip it\n",
-                   status);
+                   "nothing was written to --out %s; use --no-report to skip it\n",
+                   status, options.out.c_str());
       return 1;
     }
     std::printf("report: %s/modal_report.md\n", options.out.c_str());

@@ -10,6 +10,7 @@
 #include "component_input.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -42,7 +43,7 @@ ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
   return table_of(paper_part_input(c, part_name), count);
 }
 
-int run_modes(const ModesOptions& options, OutputDirectories& directories) {
+int run_modes(const ModesOptions& options, StagedOutput& output) {
   const auto start = std::chrono::steady_clock::now();
   const ComponentInput input = load_component_input(options.case_path, options.part, options.load);
   const auto loaded = std::chrono::steady_clock::now();
@@ -50,9 +51,9 @@ int run_modes(const ModesOptions& options, OutputDirectories& directories) {
   const auto solved = std::chrono::steady_clock::now();
   const Modes& modes = table.modes;
   const int n = table.n_dofs;
-  directories.make(options.out, "--out");
+  const std::string dir = output.open(options.out, "--out", modes_output_set());
+  write_text_file(dir + "/modes.csv", table.csv);
   const std::string path = options.out + "/modes.csv";
-  write_text_file(path, table.csv);
 
   const auto seconds = [](auto a, auto b) { return std::chrono::duration<double>(b - a).count(); };
   std::printf("%s: %s, %d dofs (%s)\n", input.case_source.c_str(), input.component.name.c_str(),

@@ -7,14 +7,15 @@
 
 #include "commands.hpp"
 #include "component_input.hpp"
-#include "output_files.hpp"
 #include "critical_step.hpp"
+#include "output_files.hpp"
 #include "reduced_run.hpp"
 #include "reduction.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 
-int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
+int run_reduce(const ReduceOptions& options, StagedOutput& output) {
   if (options.method != "cb" && options.method != "ccm" && options.method != "guyan" &&
       options.method != "macneal")
     throw UsageError("--method: must be cb, ccm, guyan or macneal, got '" + options.method + "'");
@@ -30,10 +31,10 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
       reduce(c.stiffness, c.mass, c.boundary, options.method, options.modes);
   // With a massless boundary (MacNeal) the boundary is condensed first (critical_step.hpp).
   const double omega_max = reduced_omega_max(basis);
-  directories.make(options.out, "--out");
-  write_symmetric_matrix_market(options.out + "/K.mtx", basis.stiffness.sparseView());
-  write_symmetric_matrix_market(options.out + "/M.mtx", basis.mass.sparseView());
-  write_general_matrix_market(options.out + "/T.mtx", basis.transformation.sparseView());
+  const std::string dir = output.open(options.out, "--out", reduce_output_set());
+  write_symmetric_matrix_market(dir + "/K.mtx", basis.stiffness.sparseView());
+  write_symmetric_matrix_market(dir + "/M.mtx", basis.mass.sparseView());
+  write_general_matrix_market(dir + "/T.mtx", basis.transformation.sparseView());
   nlohmann::ordered_json j;
   j["component"] = c.name;
   j["method"] = basis.method;
@@ -49,7 +50,7 @@ int run_reduce(const ReduceOptions& options, OutputDirectories& directories) {
   j["load_seconds"] = load_seconds;
   j["build_seconds"] = basis.build_seconds;
   j["peak_memory_bytes"] = peak_memory_bytes();
-  write_text_file(options.out + "/basis.json", j.dump(2) + "\n");
+  write_text_file(dir + "/basis.json", j.dump(2) + "\n");
   std::printf("%s: %s, %s with %d modes: %d -> %d dofs; omega_max %.6e rad/s, critical step "
               "%.6e s",
               input.case_source.c_str(), c.name.c_str(), basis.method.c_str(), basis.n_modes,

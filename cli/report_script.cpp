@@ -5,6 +5,7 @@
 #include <csignal>
 #include <vector>
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,8 +19,16 @@ int run_report_script(const std::string& script, const std::string& dir) {
   for (std::string& a : args)
     argv.push_back(a.data());
   argv.push_back(nullptr);
+  // The script's stdout (its "wrote DIR/report.md" line) would name the
+  // staging folder it runs in (staged_output.hpp); rsi names the published
+  // report itself. Its stderr (tracebacks) stays.
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
   pid_t pid = 0;
-  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
+  const int spawned = posix_spawn(&pid, python.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) return 127;
   int status = 0;
   pid_t waited = 0;
   do {

@@ -7,8 +7,8 @@
 
 namespace rsi {
 
-/// Runs /usr/bin/python3 RSI_REPORTS_DIR/`script` `dir`; its exit status
-/// (127 if it cannot be started).
+/// Runs /usr/bin/python3 RSI_REPORTS_DIR/`script` `dir` (its stdout
+/// discarded, its stderr kept); its exit status (127 if it cannot be started).
 int run_report_script(const std::string& script, const std::string& dir);
 
 } // namespace rsi

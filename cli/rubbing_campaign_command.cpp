@@ -28,6 +28,7 @@
 #include "report_script.hpp"
 #include "rubbing_run.hpp"
 #include "run_outputs.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -101,8 +102,8 @@ std::string run_name(const RubbingCampaignRun& r) {
 
 /// Runs one entry into DIR/runs/<name>/ (history streamed, committed at the end).
 void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revolutions,
-               const std::string& dir, OutputDirectories& directories) {
-  directories.make(dir, "--out");
+               const std::string& dir, StagedOutput& output) {
+  output.make(dir);
   StreamedTextFile history(dir + "/history.csv");
   std::string line;
   int rows = 0;
@@ -135,7 +136,7 @@ void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revo
 } // namespace
 
 int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
-                         OutputDirectories& directories) {
+                         StagedOutput& output) {
   if (!c.rubbing || c.rubbing->campaign.empty())
     throw UsageError(c.case_path + ": key 'rubbing.campaign': missing, nothing to run (a "
                                    "component case's campaign lists its reduced runs there)");
@@ -147,7 +148,7 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                      "lists every run's e2");
   const RubbingModel model = load_rubbing_model(c, options.load);
   const RubbingSetup& setup = model.setup;
-  directories.make(options.out, "--out");
+  const std::string stage = output.open(options.out, "--out", campaign_output_set());
   std::vector<RubbingCampaignRun> runs;
   if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}});
   for (const RubbingRuns& item : setup.campaign)
@@ -155,7 +156,7 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
       runs.push_back({item.method, modes, {}, {}, {}, {}});
   for (RubbingCampaignRun& r : runs) {
     const double revolutions = r.method == "full" ? setup.full_revolutions : setup.revolutions;
-    run_entry(model, r, revolutions, options.out + "/runs/" + run_name(r), directories);
+    run_entry(model, r, revolutions, stage + "/runs/" + run_name(r), output);
     const RunSummary& s = r.run.summary;
     std::printf("%-8s %4d: %s; dt %.4e s (limit %.4e s), %d steps, basis %.2f s, "
                 "integration %.3f s\n",
@@ -191,21 +192,21 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                 r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
                 e.einf_lambda);
   }
-  write_text_file(options.out + "/convergence.csv", csv.str());
-  write_text_file(options.out + "/rubbing.json", rubbing_json(model));
+  write_text_file(stage + "/convergence.csv", csv.str());
+  write_text_file(stage + "/rubbing.json", rubbing_json(model));
   std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
               options.out.c_str(), options.out.c_str());
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const RubbingCampaignRun& r) { return r.error.empty(); });
   if (options.report) {
     std::fflush(stdout);
-    const int status = run_report_script("make_rubbing_report.py", options.out);
+    const int status = run_report_script("make_rubbing_report.py", stage);
     if (status != 0) {
+      // Exit 1 publishes nothing (staged_output.hpp): --out stays as it was.
       std::fprintf(stderr,
                    "rsi: error: the report generator %s/make_rubbing_report.py failed (status "
-                   "%d); the runs and convergence.csv are written; rerun it by hand or use "
-                   "--no-report\n",
-                   RSI_REPORTS_DIR, status);
+                   "%d); nothing was written to --out %s; fix it or use --no-report\n",
+                   RSI_REPORTS_DIR, status, options.out.c_str());
       return 1;
     }
     std::printf("report: %s/report.md\n", options.out.c_str());

@@ -16,6 +16,7 @@
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
 #include "run_outputs.hpp"
+#include "staged_output.hpp"
 
 namespace rsi {
 namespace {
@@ -53,11 +54,11 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 
 } // namespace
 
-int run_simulate(const SimulateOptions& options, OutputDirectories& directories) {
+int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
     return run_component_simulate(options, parse_component_case(document, options.case_path),
-                                  directories);
+                                  output);
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
@@ -69,7 +70,7 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   if (full && options.full_field)
     throw UsageError(
         "--full-field: only for the reduced methods (the full run has every dof already)");
-  directories.make(options.out, "--out");
+  const std::string dir = output.open(options.out, "--out", simulate_output_set());
   ReducedRunOptions run;
   run.run.force = options.force;
   run.run.progress = terminal_progress();
@@ -81,7 +82,7 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   // memory stays flat however long the run; the files are renamed to
   // history.csv (field.csv) when the run returns, completed or stopped by a
   // blow-up. An exception destroys them unrenamed: no half-written output.
-  StreamedTextFile history_file(options.out + "/history.csv");
+  StreamedTextFile history_file(dir + "/history.csv");
   int history_rows = 0;
   std::string line;
   run.run.history_sink = [&](const HistoryRow& row) {
@@ -94,7 +95,7 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   std::optional<StreamedTextFile> field_file;
   int field_rows = 0;
   if (options.full_field) {
-    field_file.emplace(options.out + "/field.csv");
+    field_file.emplace(dir + "/field.csv");
     run.field_sink = [&](double t, const Eigen::VectorXd& u) {
       line.clear();
       if (field_rows++ == 0) line = field_csv_header(u.size());
@@ -108,10 +109,10 @@ int run_simulate(const SimulateOptions& options, OutputDirectories& directories)
   if (run.run.progress) std::fprintf(stderr, "\n");
   if (history_rows == 0) history_file.append(history_csv_header(0)); // as history_csv(History{})
   history_file.commit();
-  write_text_file(options.out + "/summary.json", summary_json(result.summary));
+  write_text_file(dir + "/summary.json", summary_json(result.summary));
   if (result.casing_u_at_first_contact.size() > 0)
     write_text_file(
-        options.out + "/casing_first_contact.csv",
+        dir + "/casing_first_contact.csv",
         casing_snapshot_csv(result.casing_u_at_first_contact, result.casing_v_at_first_contact));
   if (field_file) field_file->commit();
   const RunSummary& s = result.summary;
