@@ -16,6 +16,9 @@ namespace {} // namespace
 
 ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
                              const ReducedRunOptions& options) {
+  // The full casing's step limit, bounded cheaply before the basis is built.
+  const Casing casing = assemble_casing(c);
+  check_time_step_bound(c.time.step, casing.stiffness, casing.mass, options.run.force, "casing");
   return run_reduced(c, reduce_bladed_disk(assemble_bladed_disk(c), method, modes), options);
 }
 

@@ -86,6 +86,7 @@ variant("type", lambda d: d["material"].update(density="steel"))
 variant("range", lambda d: d["bladed_disk"]["blade_section"].update(thickness=-0.002))
 variant("clearance", lambda d: d["casing"].update(radius=0.499))
 variant("unstable", lambda d: d["time"].update(step=3e-6))
+variant("largest-casing", lambda d: d["casing"].update(n_elements=100000))
 variant("no-campaign", lambda d: d.pop("campaign"))
 variant("campaign-too-many", lambda d: d.update(campaign=[{"method": "cb", "modes": [0, 700]}]))
 variant("campaign-guyan-modes", lambda d: d.update(campaign=[{"method": "guyan", "modes": [3]}]))
@@ -188,6 +189,12 @@ expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" re
 
 # simulate
 expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
+# Cheap checks first (issue 13, class 9): the largest casing (100000
+# elements, 400000 dofs) cannot run at the default step; the one-dof
+# Rayleigh bound says so before the Lanczos eigensolver (minutes) and before
+# a basis is built. timeout: the old code still ran its eigensolver at 60 s.
+expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 2/sqrt(max_i K_ii/M_ii) = 6.45608e-12 s" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --out "$work/out"
+expect 2 "not below the central-difference stability limit of the casing" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --method cb --modes 10 --out "$work/out"
 expect 2 "--method: must be full, cb, ccm, guyan or macneal, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
 expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal: component cases), got 'macneal'" -- "$rsi" simulate "$good" --method macneal --modes 10 --out "$work/out"
 expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" simulate "$good" --method cb --modes 639 --out "$work/out"

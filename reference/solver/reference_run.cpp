@@ -28,6 +28,8 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
   RunSummary& s = result.summary;
   s.method = "full";
   s.n_dofs = static_cast<int>(k.rows());
+  check_time_step_bound(c.time.step, bd.stiffness, bd.mass, options.force, "bladed disk");
+  check_time_step_bound(c.time.step, casing.stiffness, casing.mass, options.force, "casing");
   const double omega_bladed_disk = max_angular_frequency(bd.stiffness, bd.mass);
   s.bladed_disk_critical_dt = 2.0 / omega_bladed_disk;
   check_time_step(c.time.step,

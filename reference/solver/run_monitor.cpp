@@ -1,6 +1,7 @@
 #include "run_monitor.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,6 +20,24 @@ void check_time_step(double dt, double omega_max, bool force, RunSummary& s) {
             << " rad/s); use a smaller step or --force";
     throw StabilityError(message.str());
   }
+}
+
+void check_time_step_bound(double dt, const Eigen::SparseMatrix<double>& stiffness,
+                           const Eigen::SparseMatrix<double>& mass, bool force,
+                           const std::string& part) {
+  double largest = 0.0;
+  for (Eigen::Index i = 0; i < stiffness.rows(); ++i)
+    largest = std::max(largest, stiffness.coeff(i, i) / mass.coeff(i, i));
+  const double bound = 2.0 / std::sqrt(largest);
+  if (force || !(dt >= bound)) return;
+  std::ostringstream message;
+  message.precision(6);
+  message << "time.step = " << dt
+          << " s is not below the central-difference stability limit of the " << part
+          << ": 2/omega_max <= 2/sqrt(max_i K_ii/M_ii) = " << bound
+          << " s (one dof's Rayleigh quotient bounds omega_max from below; found before the "
+             "eigensolver); use a smaller step or --force";
+  throw StabilityError(message.str());
 }
 
 RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& options,
