@@ -9,6 +9,7 @@
 #include "output_files.hpp"
 #include "rubbing_run.hpp"
 #include "run_outputs.hpp"
+#include "terminal_progress.hpp"
 #include "staged_output.hpp"
 
 namespace rsi {
@@ -53,7 +54,9 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
   run.modes = options.modes;
   run.force = options.force;
   run.checkpoint = throw_if_interrupted;
+  run.progress = terminal_progress(options.method);
   const RubbingRun result = run_rubbing(model, run, sink);
+  finish_terminal_progress(run.progress);
   throw_if_interrupted();
   if (rows == 0) history_file.append(component_history_header(model.response_name, nc));
   history_file.commit();

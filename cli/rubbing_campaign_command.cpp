@@ -28,6 +28,7 @@
 #include "report_script.hpp"
 #include "rubbing_run.hpp"
 #include "run_outputs.hpp"
+#include "terminal_progress.hpp"
 #include "staged_output.hpp"
 
 namespace rsi {
@@ -121,12 +122,15 @@ void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revo
   o.modes = entry.modes;
   o.revolutions = revolutions;
   o.checkpoint = throw_if_interrupted;
+  o.progress = terminal_progress(run_name(entry));
   try {
     entry.run = run_rubbing(model, o, sink);
   } catch (const ReductionError& e) {
+    finish_terminal_progress(o.progress);
     entry.error = e.what();
     return;
   }
+  finish_terminal_progress(o.progress);
   throw_if_interrupted();
   history.commit();
   write_text_file(dir + "/summary.json", summary_json(entry.run.summary));

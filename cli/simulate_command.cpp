@@ -17,20 +17,10 @@
 #include "reference_run.hpp"
 #include "run_outputs.hpp"
 #include "staged_output.hpp"
+#include "terminal_progress.hpp"
 
 namespace rsi {
 namespace {
-
-/// Progress on stderr, only when it is a terminal and the run has lasted a second.
-std::function<void(double)> terminal_progress() {
-  if (!::isatty(STDERR_FILENO)) return {};
-  const auto start = std::chrono::steady_clock::now();
-  return [start](double fraction) {
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed > 1.0) std::fprintf(stderr, "\r%5.1f%% (%.1f s)", 100.0 * fraction, elapsed);
-  };
-}
 
 /// field.csv: one row per history row, t then every bladed-disk dof (u = T q).
 std::string field_csv_header(Eigen::Index n_dofs) {
@@ -106,7 +96,7 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
 
   const RunResult result =
       full ? run_reference(c, run.run) : run_reduced(c, options.method, options.modes, run).run;
-  if (run.run.progress) std::fprintf(stderr, "\n");
+  finish_terminal_progress(run.run.progress);
   if (history_rows == 0) history_file.append(history_csv_header(0)); // as history_csv(History{})
   history_file.commit();
   write_text_file(dir + "/summary.json", summary_json(result.summary));
