@@ -87,6 +87,7 @@ variant("range", lambda d: d["bladed_disk"]["blade_section"].update(thickness=-0
 variant("clearance", lambda d: d["casing"].update(radius=0.499))
 variant("unstable", lambda d: d["time"].update(step=3e-6))
 variant("largest-casing", lambda d: d["casing"].update(n_elements=100000))
+variant("curled", lambda d: d["bladed_disk"].update(n_blade_elements=1000, kink_angle_deg=1.8))
 variant("no-campaign", lambda d: d.pop("campaign"))
 variant("campaign-too-many", lambda d: d.update(campaign=[{"method": "cb", "modes": [0, 700]}]))
 variant("campaign-guyan-modes", lambda d: d.update(campaign=[{"method": "guyan", "modes": [3]}]))
@@ -163,6 +164,7 @@ fi
 expect 2 "clearance must be positive" -- "$rsi" modes "$work/clearance.json" --out "$work/out"
 # The blade as a whole (issue 13, class 7): every key in range, 1000 elements
 # at the default 1 degree kink turn it by 1000 degrees, a spiral.
+expect 2 "$work/curled.json: bladed_disk.kink_angle_deg: the blade curls too much for its tip to reach tip_radius" -- "$rsi" modes "$work/curled.json" --out "$work/out"
 expect 2 "keys 'bladed_disk.n_blade_elements' and 'bladed_disk.kink_angle_deg': the blade curls back" -- "$rsi" modes "$src/fuzz/corpus/spiral-blade.json" --out "$work/out"
 expect 2 "--count: must be in [1, 682]" -- "$rsi" modes "$good" --count 1000 --out "$work/out"
 expect 2 "--count: must be in [1, 156]" -- "$rsi" modes "$good" --part casing --count 157 --out "$work/out"

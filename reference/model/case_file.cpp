@@ -59,7 +59,13 @@ CasingSpec read_casing(ObjectReader r, double tip_radius) {
 /// inside the casing, and its rotated copies (the other sectors) never meet
 /// it: each radius is crossed once per blade, at angles a pitch apart.
 void check_blade_shape(const BladedDiskSpec& spec, const std::string& source) {
-  const BladeGeometry g = blade_geometry(spec);
+  BladeGeometry g;
+  try {
+    g = blade_geometry(spec);
+  } catch (const CaseError& e) {
+    // blade_geometry names the keys; the loader's messages start with the file.
+    throw CaseError(source + ": " + e.what());
+  }
   for (size_t i = 2; i < g.nodes.size(); ++i)
     if (!(g.nodes[i].norm() > g.nodes[i - 1].norm())) {
       std::ostringstream m;
