@@ -208,22 +208,14 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
   // lambda_min 390 against n eps lambda_max 3900, a 3 Hz bending mode).
   // Four times gamma_p leaves room for the eigenvector's own error, which
   // shift-invert about 0 makes far smaller for a null vector.
-  const Eigen::VectorXd phi = modes.shapes.col(0);
-  const double residual = (stiffness * phi).cwiseAbs().maxCoeff();
-  const double rounding = (stiffness.cwiseAbs() * phi.cwiseAbs()).maxCoeff();
-  Eigen::Index row_terms = 0;
-  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = stiffness;
-  for (Eigen::Index i = 0; i < rows.rows(); ++i)
-    row_terms = std::max<Eigen::Index>(row_terms, rows.outerIndexPtr()[i + 1] - rows.outerIndexPtr()[i]);
-  const double pe = static_cast<double>(row_terms) * std::numeric_limits<double>::epsilon();
-  const double gamma = pe / (1.0 - pe);
-  if (!(residual > 4.0 * gamma * rounding)) {
+  double residual = 0.0, bound = 0.0;
+  const bool singular = within_product_rounding(stiffness, modes.shapes.col(0), residual, bound);
+  if (singular) {
     std::ostringstream message;
     message << "modal analysis: the stiffness matrix is singular to working precision (the "
                "lowest mode, eigenvalue "
             << modes.omega_squared(0) << " rad^2/s^2, has |K phi| = " << residual
-            << ", within the rounding of the product, 4 gamma_p | |K| |phi| | = "
-            << 4.0 * gamma * rounding
+            << ", within the rounding of the product, 4 gamma_p | |K| |phi| | = " << bound
             << "): the part is not supported against a rigid motion";
     throw ModalError(message.str());
   }
@@ -231,6 +223,20 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
 }
 
 } // namespace
+
+bool within_product_rounding(const Eigen::SparseMatrix<double>& stiffness,
+                             const Eigen::VectorXd& phi, double& residual, double& bound) {
+  residual = (stiffness * phi).cwiseAbs().maxCoeff();
+  const double rounding = (stiffness.cwiseAbs() * phi.cwiseAbs()).maxCoeff();
+  Eigen::Index row_terms = 0;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = stiffness;
+  for (Eigen::Index i = 0; i < rows.rows(); ++i)
+    row_terms =
+        std::max<Eigen::Index>(row_terms, rows.outerIndexPtr()[i + 1] - rows.outerIndexPtr()[i]);
+  const double pe = static_cast<double>(row_terms) * std::numeric_limits<double>::epsilon();
+  bound = 4.0 * pe / (1.0 - pe) * rounding;
+  return !(residual > bound);
+}
 
 double max_angular_frequency(const Eigen::SparseMatrix<double>& stiffness,
                              const Eigen::SparseMatrix<double>& mass) {

@@ -57,6 +57,15 @@ enum class ModalSolver {
 /// of K and M: 2 n^2 doubles, 64 MB at this size).
 constexpr int dense_limit = 2000;
 
+/// True if K phi is zero to working precision: |K phi|_inf at most four
+/// times the rounding of the product, 4 gamma_p || |K| |phi| ||_inf (rows of
+/// at most p terms; Higham, Accuracy and Stability, eq. 3.5). A rigid
+/// motion's phi passes; an elastic mode's K phi = lambda M phi stands clear of
+/// it even when lambda_min / lambda_max is below n eps (refined or stiff
+/// models). `residual` and `bound` receive the two numbers for messages.
+bool within_product_rounding(const Eigen::SparseMatrix<double>& stiffness,
+                             const Eigen::VectorXd& phi, double& residual, double& bound);
+
 /// omega_max [rad/s] alone, by Lanczos (Spectra, Cholesky mode on CHOLMOD's
 /// factor of M): cheap for any size, for the stability limit of explicit
 /// integration. ModalError if M is not positive definite.
