@@ -99,10 +99,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output);
 /// rsi campaign on a component case (rubbing.campaign).
 int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                          StagedOutput& output);
-/// history.csv of a component run: t, the response dof, then the columns of
-/// history_csv_header with two tangents per contact.
-std::string component_history_header(const std::string& response_name, int n_contacts);
-void append_component_history_row(std::string& out, const HistoryRow& row, double response);
+
 int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output);
 
 } // namespace rsi

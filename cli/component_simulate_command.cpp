@@ -5,6 +5,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "component_history_file.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "rubbing_run.hpp"
@@ -13,22 +14,6 @@
 #include "staged_output.hpp"
 
 namespace rsi {
-
-std::string component_history_header(const std::string& response_name, int n_contacts) {
-  // t, the response dof, then the columns of the paper's case (3D: two tangents).
-  return "t," + response_name + history_csv_header(n_contacts, 2).substr(1);
-}
-
-void append_component_history_row(std::string& out, const HistoryRow& row, double response) {
-  std::string rest;
-  append_history_csv_row(rest, row);
-  const size_t comma = rest.find(',');
-  out += rest.substr(0, comma);
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, ",%.17g", response);
-  out += buffer;
-  out += rest.substr(comma);
-}
 
 int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
                            StagedOutput& output) {
@@ -39,15 +24,10 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
     throw UsageError("--modes: only for a reduced method; drop it");
   const RubbingModel model = load_rubbing_model(c, options.load);
   const std::string dir = output.open(options.out, "--out", simulate_output_set());
-  StreamedTextFile history_file(dir + "/history.csv");
-  std::string line;
-  int rows = 0;
   const int nc = static_cast<int>(model.contact_nodes.size());
+  ComponentHistoryFile history_file(dir + "/history.csv", model.response_name, nc);
   const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
-    line.clear();
-    if (rows++ == 0) line = component_history_header(model.response_name, nc);
-    append_component_history_row(line, row, response);
-    history_file.append(line);
+    history_file.append(row, response);
   };
   RubbingRunOptions run;
   run.method = options.method;
@@ -58,7 +38,6 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
   const RubbingRun result = run_rubbing(model, run, sink);
   finish_terminal_progress(run.progress);
   throw_if_interrupted();
-  if (rows == 0) history_file.append(component_history_header(model.response_name, nc));
   history_file.commit();
   write_text_file(dir + "/summary.json", summary_json(result.summary));
   const RunSummary& s = result.summary;

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "component_history_file.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_basis.hpp"
@@ -105,15 +106,10 @@ std::string run_name(const RubbingCampaignRun& r) {
 void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revolutions,
                const std::string& dir, StagedOutput& output) {
   output.make(dir);
-  StreamedTextFile history(dir + "/history.csv");
-  std::string line;
-  int rows = 0;
-  const int nc = static_cast<int>(model.contact_nodes.size());
+  ComponentHistoryFile history(dir + "/history.csv", model.response_name,
+                               static_cast<int>(model.contact_nodes.size()));
   const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
-    line.clear();
-    if (rows++ == 0) line = component_history_header(model.response_name, nc);
-    append_component_history_row(line, row, response);
-    history.append(line);
+    history.append(row, response);
     entry.response.push_back(response);
     entry.lambda_n.push_back(row.lambda);
   };
