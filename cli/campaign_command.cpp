@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
+#include "casing.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
@@ -38,8 +39,15 @@ struct CampaignResult {
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
 };
 
+/// "cb-64" for the first round's runs; the issue-14 axes append
+/// "-<selection>" (not lowest), "-c<N_c>" (modal casing) and "-dt-own" or
+/// "-dt-<step>" (not the case's step): "cb-64-families-c20-dt-own".
 std::string run_name(const CampaignRun& r) {
-  return r.method + "-" + std::to_string(r.modes);
+  std::string name = r.method + "-" + std::to_string(r.modes);
+  if (r.selection != "lowest") name += "-" + r.selection;
+  if (r.casing_modes > 0) name += "-c" + std::to_string(r.casing_modes);
+  if (r.step.kind != StepRule::Kind::case_step) name += "-dt-" + r.step.name();
+  return name;
 }
 
 /// Smallest mode count of `method` whose e2 is at most `target` (-1: none).
@@ -73,6 +81,17 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
   int disk_dofs = 0;
   {
+    const int casing_dofs = assemble_casing(c).n_dofs();
+    for (const CampaignRun& r : c.campaign)
+      if (r.casing_modes > casing_dofs)
+        throw UsageError(c.source + ": key 'campaign': casing_modes " +
+                         std::to_string(r.casing_modes) + " of " + r.method + "-" +
+                         std::to_string(r.modes) + ": must be in [0, " +
+                         std::to_string(casing_dofs) + "] (0: the full casing; its dofs)");
+    for (const CampaignRun& r : c.campaign)
+      if (r.selection != "lowest")
+        throw UsageError(c.source + ": key 'campaign': selection \"" + r.selection +
+                         "\" is not built yet; use \"lowest\"");
     const BladedDisk bd = assemble_bladed_disk(c);
     disk_dofs = bd.n_dofs();
     const int most = disk_dofs - static_cast<int>(bd.boundary.size());
@@ -88,7 +107,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.
   std::vector<CampaignResult> runs(c.campaign.size() + 1);
-  runs[0].run = {"full", 0};
+  runs[0].run.method = "full";
   for (size_t i = 0; i < c.campaign.size(); ++i)
     runs[i + 1].run = c.campaign[i];
   std::atomic<size_t> next{0};
@@ -110,6 +129,9 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {
       CampaignResult& r = runs[i];
       ReducedRunOptions run_options;
+      run_options.step = r.run.step;
+      run_options.step_key = c.source + ": campaign run " + run_name(r.run) + ": time_step";
+      run_options.casing_modes = r.run.casing_modes;
       run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign
       std::string row;
       run_options.run.history_sink = [&](const HistoryRow& h) {
@@ -122,6 +144,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
         r.result = r.run.method == "full"
                        ? run_reference(c, run_options.run)
                        : run_reduced(c, r.run.method, r.run.modes, run_options).run;
+        if (r.run.method != "full") r.result.summary.selection = r.run.selection;
         if (!r.result.summary.completed) r.error = r.result.summary.status;
       } catch (const std::exception& e) {
         r.error = e.what();
@@ -146,7 +169,10 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   std::vector<GapErrors> errors(runs.size());
   std::ostringstream csv;
   csv.precision(10);
-  csv << "method,modes,e2,e_inf,wall_s,speedup\n";
+  // The first round's columns, then the issue-14 axes: the run's step, mode
+  // selection, casing basis, basis build time (not in wall_s) and the
+  // speedup counting it in.
+  csv << "method,modes,e2,e_inf,wall_s,speedup,dt,selection,casing,basis_s,speedup_with_basis\n";
   for (size_t i = 0; i < runs.size(); ++i) {
     const CampaignResult& r = runs[i];
     const std::string dir = stage + "/runs/" + run_name(r.run);
@@ -161,9 +187,12 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     errors[i] = gap_errors(r.blade1_gap, runs[0].blade1_gap);
     r.history->commit();
     write_text_file(dir + "/summary.json", summary_json(r.result.summary));
+    const RunSummary& rs = r.result.summary;
     csv << r.run.method << "," << r.run.modes << "," << errors[i].e2 << "," << errors[i].e_inf
-        << "," << r.result.summary.wall_seconds << ","
-        << reference.summary.wall_seconds / r.result.summary.wall_seconds << "\n";
+        << "," << rs.wall_seconds << "," << reference.summary.wall_seconds / rs.wall_seconds << ","
+        << rs.dt << "," << (i == 0 ? "-" : r.run.selection) << "," << rs.casing_basis << ","
+        << rs.basis_seconds << ","
+        << reference.summary.wall_seconds / (rs.wall_seconds + rs.basis_seconds) << "\n";
   }
   write_text_file(stage + "/convergence.csv", csv.str());
   // Paper Fig. 3 analogue: the lowest 8 families of the bladed disk.
@@ -171,14 +200,14 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       stage + "/modes-bladed-disk.csv",
       modes_table(c, "bladed-disk", std::min(8 * c.bladed_disk.n_blades, disk_dofs)).csv);
 
-  std::printf("%-6s %6s %10s %10s %9s %8s\n", "method", "modes", "e2", "e_inf", "wall_s",
-              "speedup");
+  std::printf("%-28s %10s %10s %9s %8s %10s\n", "run", "e2", "e_inf", "wall_s", "speedup",
+              "dt");
   for (size_t i = 0; i < runs.size(); ++i) {
     if (!runs[i].error.empty()) continue;
-    std::printf("%-6s %6d %10.4e %10.4e %9.3f %8.2f\n", runs[i].run.method.c_str(),
-                runs[i].run.modes, errors[i].e2, errors[i].e_inf,
-                runs[i].result.summary.wall_seconds,
-                reference.summary.wall_seconds / runs[i].result.summary.wall_seconds);
+    std::printf("%-28s %10.4e %10.4e %9.4f %8.2f %10.3e\n", run_name(runs[i].run).c_str(),
+                errors[i].e2, errors[i].e_inf, runs[i].result.summary.wall_seconds,
+                reference.summary.wall_seconds / runs[i].result.summary.wall_seconds,
+                runs[i].result.summary.dt);
   }
   if (options.target_e2 > 0.0) {
     for (const char* method : {"cb", "ccm"}) {

@@ -49,6 +49,9 @@ struct SimulateOptions {
   std::string out = "out/simulate";
   bool force = false;
   bool full_field = false;
+  std::string time_step = "case"; ///< --time-step: case, own or a step in seconds (reduced methods)
+  double step_safety = 0.9;        ///< --step-safety: of --time-step own
+  int casing_modes = 0;            ///< --casing-modes: 0 the full casing (reduced methods)
   ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
 };
 

@@ -197,6 +197,26 @@ int main(int argc, char** argv) {
   simulate_cmd->add_flag(
       "--full-field", simulate.full_field,
       "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
+  CLI::Option* simulate_step =
+      simulate_cmd
+          ->add_option("--time-step", simulate.time_step,
+                       "reduced methods: case (time.step), own (the reduced system's stable "
+                       "step times --step-safety) or a step in seconds dividing the output "
+                       "interval; rows at the case's output times")
+          ->capture_default_str();
+  CLI::Option* simulate_safety =
+      simulate_cmd
+          ->add_option("--step-safety", simulate.step_safety,
+                       "with --time-step own: the fraction of 2/omega_max, in (0, 1)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* simulate_casing =
+      simulate_cmd
+          ->add_option("--casing-modes", simulate.casing_modes,
+                       "reduced methods: 0 (the full casing) or N_c, the casing in its lowest "
+                       "N_c modes plus a static correction for the forcing")
+          ->capture_default_str()
+          ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
   simulate_cmd->add_option("--out", simulate.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
@@ -296,6 +316,13 @@ int main(int argc, char** argv) {
       if (simulate_modes->count() > 0 && simulate.method == "full")
         throw rsi::UsageError("--modes: only for a reduced method (the full reference keeps "
                               "no modes); drop it");
+      for (const CLI::Option* o : {simulate_step, simulate_safety, simulate_casing})
+        if (o->count() > 0 && simulate.method == "full")
+          throw rsi::UsageError(o->get_name() +
+                                ": only for a reduced method (the full reference runs the whole "
+                                "model at time.step); drop it");
+      if (simulate_safety->count() > 0 && simulate.time_step != "own")
+        throw rsi::UsageError("--step-safety: only with --time-step own; drop it");
       return rsi::run_simulate(simulate, output);
     }
     if (*reduce_cmd) return rsi::run_reduce(reduce, output);

@@ -1,6 +1,9 @@
 // rsi simulate: one contact run -> history.csv, summary.json (history streamed).
 
+#include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -31,6 +34,26 @@ std::string field_csv_header(Eigen::Index n_dofs) {
   return out;
 }
 
+/// --time-step: "case", "own" or a step in seconds (> 0, finite).
+StepRule parse_step_option(const std::string& text, double safety) {
+  StepRule rule;
+  rule.safety = safety;
+  if (text == "case") return rule;
+  if (text == "own") {
+    rule.kind = StepRule::Kind::own;
+    return rule;
+  }
+  char* end = nullptr;
+  errno = 0;
+  const double step = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno != 0 || !std::isfinite(step) ||
+      !(step > 0.0))
+    throw UsageError("--time-step: must be case, own or a step in seconds > 0, got '" + text + "'");
+  rule.kind = StepRule::Kind::given;
+  rule.step = step;
+  return rule;
+}
+
 void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", t);
@@ -46,9 +69,15 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 
 int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);
-  if (is_component_case(document))
+  if (is_component_case(document)) {
+    // A component run takes its step from its rubbing object (each run at
+    // its own step already) and has no casing to reduce.
+    if (options.time_step != "case" || options.casing_modes != 0)
+      throw UsageError("--time-step, --casing-modes: only for the paper's case; a component "
+                       "case sets its steps in its rubbing object");
     return run_component_simulate(options, parse_component_case(document, options.case_path),
                                   output);
+  }
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
@@ -66,6 +95,9 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   run.run.progress = terminal_progress();
   run.run.checkpoint = throw_if_interrupted;
   run.full_field = options.full_field;
+  run.step = parse_step_option(options.time_step, options.step_safety);
+  run.step_key = "--time-step";
+  run.casing_modes = options.casing_modes;
 
   // Streamed output: the history rows (and field rows) are formatted and
   // written to temporary files as the run produces them, never kept, so the

@@ -16,7 +16,8 @@ bool finite_non_negative(double x) {
 
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
                                      const ReducedTipContact& contact,
-                                     const ReducedDamping& damping)
+                                     const ReducedDamping& damping,
+                                     const CasingBasis* casing_basis)
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
     , m_casing_damping(damping.casing)
@@ -56,6 +57,33 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   m_aq = mq_factor.solve(m_kq);
   if (m_q_damped) m_bq = dt * (m_mq_inverse * m_cq.asDiagonal());
 
+  const int nc = casing.n_dofs();
+  m_force = Eigen::VectorXd::Zero(nc);
+  m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
+  m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
+  if (m_c_damped) m_c_delta = m_c_damping = Eigen::VectorXd::Zero(nc);
+  if (casing_basis != nullptr) {
+    if (casing_basis->shapes.rows() != nc || casing_basis->size() < 1 ||
+        casing_basis->omega_squared.size() != casing_basis->size())
+      throw std::invalid_argument("ReducedIntegrator: the casing basis must have " +
+                                  std::to_string(nc) + " rows (the casing's dofs), got " +
+                                  std::to_string(casing_basis->shapes.rows()));
+    m_modal_casing = true;
+    m_phi = casing_basis->shapes;
+    m_omega_squared = casing_basis->omega_squared;
+    m_modal_gamma = m_casing_damping.alpha + m_casing_damping.beta * m_omega_squared.array();
+    const Eigen::ArrayXd a = 1.0 + 0.5 * dt * m_modal_gamma.array();
+    if (!(a.minCoeff() > 0.0) || !a.allFinite())
+      throw ReducedIntegrationError(
+          "reduced integrator: the modal casing's 1 + dt/2 gamma_i is not positive");
+    m_modal_a_inverse = a.inverse().matrix();
+    m_phi_scaled_t = m_modal_a_inverse.asDiagonal() * m_phi.transpose();
+    m_mc_inverse = m_phi * m_phi_scaled_t;
+    const int m = casing_basis->size();
+    m_force_modal = m_p = m_p_prev = m_p_next = m_dp = Eigen::VectorXd::Zero(m);
+    return;
+  }
+
   // A_c = M_c + dt/2 (alpha M_c + beta K_c) (M_c undamped).
   const Eigen::SparseMatrix<double> a_c =
       m_c_damped
@@ -68,22 +96,23 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
                                   (m_c_damped ? " plus dt/2 C_c" : "") +
                                   " is not positive definite");
-  m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(casing.n_dofs(), casing.n_dofs()));
-  const int nc = casing.n_dofs();
+  m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(nc, nc));
   m_mc_order.resize(nc);
   for (int i = 0; i < nc; ++i)
     m_mc_order[i] =
         m_mc_factor.permutationP().size() > 0 ? m_mc_factor.permutationP().indices()(i) : i;
   m_mc_inverse_d = m_mc_factor.vectorD().cwiseInverse();
-  m_force = Eigen::VectorXd::Zero(nc);
-  m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
-  m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
-  if (m_c_damped) m_c_delta = m_c_damping = Eigen::VectorXd::Zero(nc);
 }
 
 double ReducedIntegrator::casing_flops_per_step() const {
-  const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
   const auto n = static_cast<double>(m_kc.rows());
+  if (m_modal_casing) {
+    const auto m = static_cast<double>(m_phi.cols());
+    double flops = 2.0 * n * m + 10.0 * m;
+    if (m_c_damped) flops += 2.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 5.0 * n;
+    return flops;
+  }
+  const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
   double flops = 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l + 5.0 * n;
   if (m_c_damped) flops += 4.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 10.0 * n;
   return flops;
@@ -111,6 +140,7 @@ void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casin
                                 std::to_string(m_force.size()) + " dofs");
   m_force = casing_force;
   m_force_zero = (m_force.array() == 0.0).all();
+  if (m_modal_casing) m_force_modal.noalias() = m_phi.transpose() * m_force;
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
@@ -136,7 +166,12 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
     m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
   }
   m_c = Eigen::VectorXd::Zero(m_kc.rows());
-  if (m_c_damped) {
+  if (m_modal_casing) {
+    // At rest p_{-1} = dt^2/2 Phi^T F (the modal mass is I), c = Phi p.
+    m_p.setZero();
+    m_p_prev = 0.5 * m_dt * m_dt * m_force_modal;
+    m_c_prev.noalias() = m_phi * m_p_prev;
+  } else if (m_c_damped) {
     // At rest c_{-1} = dt^2/2 M_c^-1 F with M_c itself (not A_c), so c_1 = c_{-1}.
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass(m_mc);
     if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
@@ -375,6 +410,7 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
   const double dt2 = m_dt * m_dt;
   m_dq.setZero();
   m_dc.setZero();
+  if (m_modal_casing) m_dp.setZero();
   for (int j = 0; j < m_lambda.size(); ++j) {
     if (m_lambda(j) == 0.0 && m_lambda_t(j) == 0.0) continue;
     const TipContact& tip = tips[j];
@@ -382,17 +418,50 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
     const double ft = dt2 * m_lambda_t(j);
     m_dq -= f * m_mq_inverse.col(tip.q_u);
     if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
-    for (int b = 0; b < 4; ++b) {
-      if (tip.c_u[b] < 0) continue;
-      m_dc += f * tip.shape[b] * m_mc_inverse.col(tip.c_u[b]);
-      if (ft != 0.0) m_dc -= ft * tip.shape[b] * m_mc_inverse.col(tip.c_v[b]);
-    }
+    add_casing_correction(tip, f, -ft);
   }
   m_q_next += m_dq;
-  m_c_next += m_dc;
+  apply_casing_correction();
+}
+
+void ReducedIntegrator::add_casing_correction(const TipContact& tip, double f_u, double f_v) {
+  // c_u and c_v interleaved per node, as summed before the modal casing
+  // existed (the full-casing histories stay bit for bit).
+  Eigen::VectorXd& sum = m_modal_casing ? m_dp : m_dc;
+  const Eigen::MatrixXd& columns = m_modal_casing ? m_phi_scaled_t : m_mc_inverse;
+  for (int b = 0; b < 4; ++b) {
+    if (tip.c_u[b] < 0) continue;
+    sum += (f_u * tip.shape[b]) * columns.col(tip.c_u[b]);
+    if (f_v != 0.0) sum += (f_v * tip.shape[b]) * columns.col(tip.c_v[b]);
+  }
+}
+
+void ReducedIntegrator::apply_casing_correction() {
+  if (m_modal_casing) {
+    m_p_next += m_dp;
+    m_c_next.noalias() = m_phi * m_p_next;
+  } else {
+    m_c_next += m_dc;
+  }
+}
+
+void ReducedIntegrator::predict_modal_casing() {
+  const double dt2 = m_dt * m_dt;
+  const Eigen::Index m = m_p.size();
+  for (Eigen::Index i = 0; i < m; ++i) {
+    double acc = -m_omega_squared(i) * m_p(i);
+    if (!m_force_zero) acc += m_force_modal(i);
+    if (m_c_damped) acc -= m_modal_gamma(i) * (m_p(i) - m_p_prev(i)) / m_dt;
+    m_p_next(i) = 2.0 * m_p(i) - m_p_prev(i) + dt2 * m_modal_a_inverse(i) * acc;
+  }
+  m_c_next.noalias() = m_phi * m_p_next;
 }
 
 void ReducedIntegrator::predict_casing() {
+  if (m_modal_casing) {
+    predict_modal_casing();
+    return;
+  }
   // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y by
   // Eigen's triangular solves on the factor (no permutation in place), and
   // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)).
@@ -456,18 +525,23 @@ StepReport ReducedIntegrator::step() {
   } else if (corrected) {
     m_dq.setZero();
     m_dc.setZero();
+    if (m_modal_casing) m_dp.setZero();
     for (int j = 0; j < m_lambda.size(); ++j) {
       if (m_lambda(j) == 0.0) continue;
       const TipContact& tip = m_predicted[j];
       const double f = dt2 * m_lambda(j);
       m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
-      for (int b = 0; b < 4; ++b)
-        if (tip.c_u[b] >= 0)
-          m_dc += f * tip.shape[b] *
-                  (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
+      if (m_modal_casing) {
+        add_casing_correction(tip, f, f * m_mu * tip.sign);
+      } else {
+        for (int b = 0; b < 4; ++b)
+          if (tip.c_u[b] >= 0)
+            m_dc += f * tip.shape[b] *
+                    (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
+      }
     }
     m_q_next += m_dq;
-    m_c_next += m_dc;
+    apply_casing_correction();
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
   if (!m_force_zero) {
@@ -510,6 +584,10 @@ StepReport ReducedIntegrator::step() {
   m_q.swap(m_q_next);
   m_c_prev.swap(m_c);
   m_c.swap(m_c_next);
+  if (m_modal_casing) {
+    m_p_prev.swap(m_p);
+    m_p.swap(m_p_next);
+  }
   ++m_n;
 
   // The tips at the new state: those predicted unless a correction moved it

@@ -40,6 +40,20 @@
 // E = E_0 + W_ext + W_contact - W_damp to round-off. Without damping A = M
 // and the step is the undamped one, operation for operation.
 //
+// Reduced casing (issue 14; casing_basis.hpp): with a CasingBasis the
+// casing is c = Phi p, Phi^T M_c Phi = I, Phi^T K_c Phi = Omega^2 = diag, and
+// the casing's part of the step is, mode by mode (C_c = alpha M_c + beta K_c
+// is diagonal there, gamma_i = alpha + beta omega_i^2, a_i = 1 + dt/2 gamma_i),
+//   p~_i = 2 p_i - p_{i,prev} + dt^2 (f_i - omega_i^2 p_i - gamma_i (p_i - p_{i,prev}) / dt) / a_i,
+// f = Phi^T F, then c~ = Phi p~ (every casing dof is read by the 22 tips'
+// contact evaluation: the reconstruction is the cost, 2 n_c N_c flops). The
+// contact rows stay the physical ones at the casing dofs; A_c^-1 becomes
+// Phi diag(1/a) Phi^T (the flexibility the modal casing has), and the
+// correction is applied to p: p += dt^2 diag(1/a) Phi^T B_c^T lambda, then
+// c = Phi p again. Energy, works and W_damp keep their physical formulas:
+// with c = Phi p they are the modal ones to round-off. The critical step is
+// 2 / max(omega_max(K^, M^), max omega_i).
+//
 // Friction law (the case's operating_point.friction_law). "sliding_sign"
 // (the default): the force rows D above, always sliding, as in the first
 // version, operation for operation. "coulomb" (issue 12, stick and slip):
@@ -86,6 +100,7 @@
 #include <Eigen/SparseCore>
 
 #include "case_file.hpp"
+#include "casing_basis.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
@@ -109,11 +124,14 @@ class ReducedIntegrator {
 public:
   /// `contact` must outlive the integrator (not owned). Throws
   /// std::invalid_argument for a damping of the wrong size, negative or not
-  /// finite, ReducedIntegrationError when M^ + dt/2 C^ or the casing's
-  /// M_c + dt/2 C_c is not positive definite.
+  /// finite, or a casing basis whose rows are not the casing's dofs,
+  /// ReducedIntegrationError when M^ + dt/2 C^ or the casing's
+  /// M_c + dt/2 C_c is not positive definite. `casing_basis`, when given,
+  /// runs the casing in its modal coordinates (copied; see above).
   ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
                     const ReducedTipContact& contact,
-                    const ReducedDamping& damping = ReducedDamping{});
+                    const ReducedDamping& damping = ReducedDamping{},
+                    const CasingBasis* casing_basis = nullptr);
 
   /// From rest under the casing force f0 at t = 0; f0 is held for the steps
   /// that follow until set_force changes it.
@@ -169,7 +187,9 @@ public:
   /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
   /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
   /// Damped, also M_c and K_c times a difference twice (force and W_damp:
-  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c.
+  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c. A modal casing: the
+  /// reconstruction c = Phi p (2 n_c m) and about 10 m (damped: the same
+  /// W_damp products as the full casing).
   double casing_flops_per_step() const;
 
 private:
@@ -188,6 +208,14 @@ private:
   void correct_coulomb(const std::vector<TipContact>& tips);
   /// m_c_next = c~ from m_c, m_c_prev and the held force.
   void predict_casing();
+  /// The same for a modal casing, from m_p, m_p_prev (c~ = Phi p~).
+  void predict_modal_casing();
+  /// The casing's correction A_c^-1 (N^T f_u on tip's c_u + N^T f_v on its
+  /// c_v) added to m_dc (full casing) or to m_dp (modal casing, diag(1/a)
+  /// Phi^T in place of A_c^-1); f already carries dt^2.
+  void add_casing_correction(const TipContact& tip, double f_u, double f_v);
+  /// c_{n+1} += the correction gathered in m_dc or m_dp.
+  void apply_casing_correction();
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
   /// over both parts, with m_q_next, m_c_next = x_{n+1}.
   double step_damping_work();
@@ -207,7 +235,16 @@ private:
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor; ///< of A_c = M_c + dt/2 C_c
   std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
   Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
-  Eigen::MatrixXd m_mc_inverse;
+  Eigen::MatrixXd m_mc_inverse; ///< A_c^-1 (modal casing: Phi diag(1/a) Phi^T)
+  // Modal casing (casing_basis): c = Phi p.
+  bool m_modal_casing = false;
+  Eigen::MatrixXd m_phi;             ///< Phi, n_c x m
+  Eigen::MatrixXd m_phi_scaled_t;    ///< diag(1/a) Phi^T, m x n_c: the correction's columns
+  Eigen::VectorXd m_omega_squared;   ///< omega_i^2
+  Eigen::VectorXd m_modal_gamma;     ///< gamma_i = alpha + beta omega_i^2
+  Eigen::VectorXd m_modal_a_inverse; ///< 1 / a_i
+  Eigen::VectorXd m_force_modal;     ///< Phi^T F
+  Eigen::VectorXd m_p, m_p_prev, m_p_next, m_dp;
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;

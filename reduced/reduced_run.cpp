@@ -1,6 +1,8 @@
 #include "reduced_run.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "bladed_disk.hpp"
 #include "casing.hpp"
@@ -10,6 +12,7 @@
 #include "reduced_contact.hpp"
 #include "reduced_integrator.hpp"
 #include "reduction.hpp"
+#include "run_step.hpp"
 
 namespace rsi {
 namespace {} // namespace
@@ -18,32 +21,55 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
                              const ReducedRunOptions& options) {
   // The full casing's step limit, bounded cheaply before the basis is built.
   const Casing casing = assemble_casing(c);
-  check_time_step_bound(c.time.step, casing.stiffness, casing.mass, options.run.force, "casing");
+  if (options.casing_modes == 0 && options.step.kind != StepRule::Kind::own) {
+    const double dt = options.step.kind == StepRule::Kind::given ? options.step.step : c.time.step;
+    check_time_step_bound(dt, casing.stiffness, casing.mass, options.run.force, "casing");
+  }
   return run_reduced(c, reduce_bladed_disk(assemble_bladed_disk(c), method, modes), options);
 }
 
-ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
+ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
                              const ReducedRunOptions& options) {
   if (basis.massless_boundary)
     throw ReductionError(
         "--method: " + basis.method +
         " has a massless boundary, which needs a static boundary balance at "
         "every step (SPEC §8); the reduced integrator inverts M^ and cannot run it");
-  const Clock::time_point start = Clock::now();
-  const BladedDisk bd = assemble_bladed_disk(c);
-  const Casing casing = assemble_casing(c);
   ReducedRunResult out;
+  {
+    // The casing basis is a basis like the bladed disk's: built before the
+    // run's clock starts, its time counted in basis_seconds.
+    const Casing casing = assemble_casing(case_in);
+    if (options.casing_modes < 0 || options.casing_modes > casing.n_dofs())
+      throw ReductionError("casing_modes: must be in [0, " + std::to_string(casing.n_dofs()) +
+                           "] (0: the full casing; at most its dofs), got " +
+                           std::to_string(options.casing_modes));
+    if (options.casing_modes != 0)
+      out.casing_basis = reduce_casing(casing, options.casing_modes,
+                                       casing_forcing(casing, case_in.forcing));
+  }
+  const Clock::time_point start = Clock::now();
+  const BladedDisk bd = assemble_bladed_disk(case_in);
+  const Casing casing = assemble_casing(case_in);
+  const Eigen::VectorXd forcing = casing_forcing(casing, case_in.forcing);
   out.basis = basis;
+  const bool modal_casing = out.casing_basis.size() > 0;
   RunResult& result = out.run;
   RunSummary& s = result.summary;
   s.method = basis.method;
-  s.n_dofs = out.basis.n_reduced() + casing.n_dofs();
-  s.basis_seconds = basis.build_seconds;
+  s.n_dofs = out.basis.n_reduced() + (modal_casing ? out.casing_basis.size() : casing.n_dofs());
+  s.basis_seconds = basis.build_seconds + out.casing_basis.build_seconds;
+  s.casing_basis = modal_casing ? out.casing_basis.name() : "full";
+  s.time_step_rule = options.step.name();
   const double omega_bladed_disk = reduced_omega_max(out.basis);
   s.bladed_disk_critical_dt = 2.0 / omega_bladed_disk;
-  check_time_step(c.time.step,
-                  std::max(omega_bladed_disk, max_angular_frequency(casing.stiffness, casing.mass)),
-                  options.run.force, s);
+  const double omega_casing = modal_casing
+                                  ? std::sqrt(out.casing_basis.omega_squared.maxCoeff())
+                                  : max_angular_frequency(casing.stiffness, casing.mass);
+  const double omega_max = std::max(omega_bladed_disk, omega_casing);
+  const RunStep step = run_step(options.step, case_in.time, omega_max, options.step_key);
+  const Case c = with_run_step(case_in, step);
+  check_time_step(c.time.step, omega_max, options.run.force, s);
 
   const ReducedTipContact contact(bd, out.basis, casing, c);
   // Modal ratio on the kept modes, Rayleigh on the full casing; with central
@@ -52,11 +78,14 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
   ReducedDamping damping;
   damping.bladed_disk = modal_damping(out.basis, c.damping.modal_ratio);
   damping.casing = c.damping.rayleigh;
-  ReducedIntegrator integrator(out.basis, casing, c.time.step, contact, damping);
+  ReducedIntegrator integrator(out.basis, casing, c.time.step, contact, damping,
+                               modal_casing ? &out.casing_basis : nullptr);
   s.flops_per_step = integrator.flops_per_step();
   s.casing_flops_per_step = integrator.casing_flops_per_step();
-  const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
-  const Eigen::VectorXd no_force = Eigen::VectorXd::Zero(casing.n_dofs());
+  const ForcingSchedule schedule(c.forcing, case_in.time, step.k);
+  auto force_of = [&](double share) -> Eigen::VectorXd {
+    return share == 1.0 ? forcing : Eigen::VectorXd(share * forcing);
+  };
 
   RunMonitor monitor(c, casing, options.run, result);
   std::vector<Eigen::VectorXd> field;
@@ -85,14 +114,14 @@ ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
       field.push_back(u);
   };
   const Clock::time_point integration_start = Clock::now();
-  bool force_on = forcing_active(c.forcing, 0.0, s.dt);
-  integrator.start(force_on ? forcing : no_force);
+  double share = schedule.share(0);
+  integrator.start(force_of(share));
   monitor.start(state(), integrator.initial_energy());
   record_field();
   for (int n = 0; n < s.steps_requested; ++n) {
-    if (forcing_active(c.forcing, n * s.dt, s.dt) != force_on) { // held until it changes
-      force_on = !force_on;
-      integrator.set_force(force_on ? forcing : no_force);
+    if (schedule.share(n) != share) { // held until it changes
+      share = schedule.share(n);
+      integrator.set_force(force_of(share));
     }
     const StepReport r = integrator.step();
     const int rows = monitor.n_rows();

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "case_file.hpp"
+#include "casing_basis.hpp"
 #include "critical_step.hpp"
 #include "reduced_basis.hpp"
 #include "run_monitor.hpp"
@@ -26,11 +27,21 @@ struct ReducedRunOptions {
   /// With full_field: when set, each field row is handed to it as it is
   /// produced and ReducedRunResult::field stays empty (streamed output).
   FieldSink field_sink;
+  /// The run's time step (run_step.hpp): the case's (default), the reduced
+  /// system's own stable step, or a given one; rows at the case's output
+  /// times in every case.
+  StepRule step;
+  /// Where a bad step is reported (CaseError's key).
+  std::string step_key = "time_step";
+  /// 0: the full casing; N_c >= 1: the casing in its lowest N_c modes plus
+  /// the static correction for the forcing (casing_basis.hpp).
+  int casing_modes = 0;
 };
 
 struct ReducedRunResult {
   RunResult run;
   ReducedBasis basis;
+  CasingBasis casing_basis; ///< empty (size 0) with the full casing
   /// Row i: the bladed-disk dofs at history row i (empty unless asked, or
   /// when streamed through ReducedRunOptions::field_sink).
   Eigen::MatrixXd field;

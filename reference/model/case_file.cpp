@@ -51,6 +51,78 @@ CasingSpec read_casing(ObjectReader r, double tip_radius) {
   return c;
 }
 
+/// The optional axes of a campaign entry (issue 14): "selection" (a
+/// name), "casing_modes" (integers, 0 = the full casing), "time_step"
+/// ("case", "own" or steps in seconds) and "step_safety" (of "own").
+struct CampaignAxes {
+  std::string selection = "lowest";
+  std::vector<int> casing_modes{0};
+  std::vector<StepRule> steps{StepRule{}};
+};
+
+CampaignAxes read_campaign_axes(ObjectReader& entry, const json& object) {
+  CampaignAxes axes;
+  entry.claim("selection");
+  if (object.contains("selection")) {
+    const json& value = object.at("selection");
+    static const std::set<std::string> names{"lowest", "families", "forced", "participation"};
+    if (!value.is_string() || !names.count(value.get<std::string>()))
+      entry.fail(entry.full("selection"),
+                 "must be \"lowest\", \"families\", \"forced\" or \"participation\", got " +
+                     value.dump());
+    axes.selection = value.get<std::string>();
+  }
+  entry.claim("casing_modes");
+  if (object.contains("casing_modes")) {
+    const json& list = object.at("casing_modes");
+    if (!list.is_array() || list.empty())
+      entry.fail(entry.full("casing_modes"),
+                 "must be a non-empty array of casing mode counts (0: the full casing), got " +
+                     list.dump());
+    axes.casing_modes.clear();
+    for (const json& m : list) {
+      if (!m.is_number_integer() || m.get<long>() < 0 || m.get<long>() > 400000)
+        entry.fail(entry.full("casing_modes"),
+                   "must hold integers in [0, 400000] (0: the full casing; at most the casing's "
+                   "dofs, checked against the model), got " +
+                       m.dump());
+      axes.casing_modes.push_back(m.get<int>());
+    }
+  }
+  double safety = 0.9;
+  entry.claim("step_safety");
+  if (object.contains("step_safety"))
+    safety = entry.number("step_safety", {0.0, 1.0, true, true, "(fraction of 2/omega_max)"});
+  entry.claim("time_step");
+  if (object.contains("time_step")) {
+    const json& list = object.at("time_step");
+    if (!list.is_array() || list.empty())
+      entry.fail(entry.full("time_step"),
+                 "must be a non-empty array of \"case\", \"own\" or steps in seconds, got " +
+                     list.dump());
+    axes.steps.clear();
+    for (const json& t : list) {
+      StepRule rule;
+      rule.safety = safety;
+      if (t == "case") {
+        rule.kind = StepRule::Kind::case_step;
+      } else if (t == "own") {
+        rule.kind = StepRule::Kind::own;
+      } else if (t.is_number() && std::isfinite(t.get<double>()) && t.get<double>() > 0.0) {
+        rule.kind = StepRule::Kind::given;
+        rule.step = t.get<double>();
+      } else {
+        entry.fail(entry.full("time_step"),
+                   "must hold \"case\", \"own\" or steps > 0 in seconds, got " + t.dump());
+      }
+      axes.steps.push_back(rule);
+    }
+  } else {
+    axes.steps.front().safety = safety;
+  }
+  return axes;
+}
+
 /// The blade as a whole (issue 13, class 7): each key in range can still
 /// make a blade that curls back (many elements at a kink: 1000 x 1 degree
 /// turns it by 1000 degrees, the tip found on R_t after a spiral through
@@ -174,16 +246,33 @@ Case parse_case(const json& document, const std::string& source) {
       if (!modes.is_array() || modes.empty())
         entry.fail(entry.full("modes"),
                    "must be a non-empty array of mode counts, got " + modes.dump());
-      for (const json& m : modes) {
+      for (const json& m : modes)
         if (!m.is_number_integer() || m.get<long>() < 0 || m.get<long>() > 100000)
           entry.fail(entry.full("modes"), "must hold integers in [0, 100000], got " + m.dump());
-        c.campaign.push_back({method.get<std::string>(), m.get<int>()});
-      }
+      const CampaignAxes axes = read_campaign_axes(entry, list[i]);
+      // Every (modes, casing_modes, time_step) of the entry, in that order.
+      for (const json& m : modes)
+        for (const int casing_modes : axes.casing_modes)
+          for (const StepRule& step : axes.steps)
+            c.campaign.push_back(
+                {method.get<std::string>(), m.get<int>(), axes.selection, casing_modes, step});
       entry.finish();
     }
   }
   top.finish();
   return c;
+}
+
+std::string StepRule::name() const {
+  switch (kind) {
+  case Kind::case_step: return "case";
+  case Kind::own: return "own";
+  case Kind::given: break;
+  }
+  std::ostringstream text;
+  text.precision(6);
+  text << step;
+  return text.str();
 }
 
 Case parse_case_text(const std::string& text, const std::string& source) {

@@ -103,10 +103,31 @@ struct Damping {
   double modal_ratio = 0.0;
 };
 
-/// One reduced run of the campaign (SPEC §4 V6): a method and a mode count.
+/// The time step of a run (issue 14). Every rule gives dt = I / k, I =
+/// time.step * time.output_every the case's output interval and k >= 1 an
+/// integer, so a run's history rows fall on the reference's output times
+/// (no interpolation) and e2, e_inf compare row by row.
+struct StepRule {
+  enum class Kind {
+    case_step, ///< time.step (k = output_every): the first round's runs
+    own,       ///< the run's own stable step: k smallest with I / k <= safety * 2 / omega_max
+    given      ///< an explicit dt that divides I (k = I / dt an integer)
+  };
+  Kind kind = Kind::case_step;
+  double safety = 0.9; ///< own: in (0, 1)
+  double step = 0.0;   ///< given: dt [s]
+  /// "case", "own" or the step in seconds, for run names and summaries.
+  std::string name() const;
+};
+
+/// One reduced run of the campaign (SPEC §4 V6): a method and a mode count,
+/// with the axes of issue 14 (mode selection, casing basis, time step).
 struct CampaignRun {
   std::string method; ///< "cb", "ccm" or "guyan"
   int modes = 0;
+  std::string selection = "lowest"; ///< mode_selection.hpp; "lowest" is the first round's
+  int casing_modes = 0;             ///< 0: the full casing; N_c: casing_basis.hpp
+  StepRule step;
 };
 
 struct Case {

@@ -96,6 +96,9 @@ struct RunSummary {
   double flops_per_step = 0.0;          ///< counted for a contact-free step
   double casing_flops_per_step = 0.0;   ///< the full casing's part of it (reduced runs)
   double basis_seconds = 0.0;           ///< time to build the reduced basis (reduced runs)
+  std::string casing_basis = "full";    ///< "full" or casing_basis.hpp's name ("modal-20+s")
+  std::string time_step_rule = "case";  ///< StepRule::name(): "case", "own" or the given step
+  std::string selection;                ///< mode selection of a reduced run ("" for full)
   double wall_seconds = 0.0;            ///< whole run: assembly, omega_max, integration
   double integration_seconds = 0.0;
   double max_penetration = 0.0;       ///< [m]

@@ -1,0 +1,89 @@
+#include "casing_basis.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
+
+#include "modal_analysis.hpp"
+
+namespace rsi {
+
+namespace {
+
+/// x made M-orthogonal to the M-orthonormal columns of `phi` (classical
+/// Gram-Schmidt, applied twice: "twice is enough").
+Eigen::VectorXd orthogonal_part(const Eigen::MatrixXd& phi, const Eigen::SparseMatrix<double>& mass,
+                                Eigen::VectorXd x) {
+  for (int pass = 0; pass < 2; ++pass) {
+    const Eigen::VectorXd mx = mass * x;
+    x -= phi * (phi.transpose() * mx);
+  }
+  return x;
+}
+
+double mass_norm(const Eigen::SparseMatrix<double>& mass, const Eigen::VectorXd& x) {
+  return std::sqrt(std::max(0.0, x.dot(mass * x)));
+}
+
+} // namespace
+
+double CasingBasis::critical_time_step() const {
+  return 2.0 / std::sqrt(omega_squared.maxCoeff());
+}
+
+std::string CasingBasis::name() const {
+  return "modal-" + std::to_string(n_modes) + (static_correction ? "+s" : "");
+}
+
+CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd& forcing) {
+  const int n = casing.n_dofs();
+  if (modes < 1 || modes > n)
+    throw std::invalid_argument("casing modes: must be in [1, " + std::to_string(n) +
+                                "] (the casing's dofs), got " + std::to_string(modes));
+  if (forcing.size() != n)
+    throw std::invalid_argument("reduce_casing: the forcing has " +
+                                std::to_string(forcing.size()) + " entries, the casing " +
+                                std::to_string(n) + " dofs");
+  const auto start = std::chrono::steady_clock::now();
+  const Modes m = lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::dense);
+  CasingBasis basis;
+  basis.n_modes = modes;
+  basis.shapes = m.shapes;
+  basis.omega_squared = m.omega_squared;
+  if (modes < n && forcing.any()) {
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(casing.stiffness);
+    if (k.info() != Eigen::Success)
+      throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized");
+    const Eigen::VectorXd x = k.solve(forcing);
+    const Eigen::VectorXd y = orthogonal_part(m.shapes, casing.mass, x);
+    const double size = mass_norm(casing.mass, x);
+    const double kept = mass_norm(casing.mass, y);
+    if (kept > std::sqrt(std::numeric_limits<double>::epsilon()) * size) {
+      // Rayleigh-Ritz on [Phi, y / |y|_M]: the projected mass is I to
+      // round-off, the projected stiffness diag(omega^2) bordered by one row.
+      Eigen::MatrixXd v(n, modes + 1);
+      v << m.shapes, y / kept;
+      const Eigen::MatrixXd kv = casing.stiffness * v;
+      const Eigen::MatrixXd mv = casing.mass * v;
+      Eigen::MatrixXd k_small = v.transpose() * kv;
+      Eigen::MatrixXd m_small = v.transpose() * mv;
+      k_small = 0.5 * (k_small + k_small.transpose()).eval();
+      m_small = 0.5 * (m_small + m_small.transpose()).eval();
+      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(k_small, m_small);
+      if (ritz.info() != Eigen::Success)
+        throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction failed");
+      basis.shapes = v * ritz.eigenvectors();
+      basis.omega_squared = ritz.eigenvalues();
+      basis.static_correction = true;
+    }
+  }
+  basis.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return basis;
+}
+
+} // namespace rsi
