@@ -39,15 +39,8 @@ struct CampaignResult {
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
 };
 
-/// "cb-64" for the first round's runs; the issue-14 axes append
-/// "-<selection>" (not lowest), "-c<N_c>" (modal casing) and "-dt-own" or
-/// "-dt-<step>" (not the case's step): "cb-64-families-c20-dt-own".
 std::string run_name(const CampaignRun& r) {
-  std::string name = r.method + "-" + std::to_string(r.modes);
-  if (r.selection != "lowest") name += "-" + r.selection;
-  if (r.casing_modes > 0) name += "-c" + std::to_string(r.casing_modes);
-  if (r.step.kind != StepRule::Kind::case_step) name += "-dt-" + r.step.name();
-  return name;
+  return r.name();
 }
 
 /// Smallest mode count of `method` whose e2 is at most `target` (-1: none).
@@ -172,7 +165,8 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   // The first round's columns, then the issue-14 axes: the run's step, mode
   // selection, casing basis, basis build time (not in wall_s) and the
   // speedup counting it in.
-  csv << "method,modes,e2,e_inf,wall_s,speedup,dt,selection,casing,basis_s,speedup_with_basis\n";
+  csv << "method,modes,e2,e_inf,wall_s,speedup,dt,selection,casing,basis_s,speedup_with_basis,"
+         "run\n";
   for (size_t i = 0; i < runs.size(); ++i) {
     const CampaignResult& r = runs[i];
     const std::string dir = stage + "/runs/" + run_name(r.run);
@@ -192,7 +186,8 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
         << "," << rs.wall_seconds << "," << reference.summary.wall_seconds / rs.wall_seconds << ","
         << rs.dt << "," << (i == 0 ? "-" : r.run.selection) << "," << rs.casing_basis << ","
         << rs.basis_seconds << ","
-        << reference.summary.wall_seconds / (rs.wall_seconds + rs.basis_seconds) << "\n";
+        << reference.summary.wall_seconds / (rs.wall_seconds + rs.basis_seconds) << ","
+        << run_name(r.run) << "\n";
   }
   write_text_file(stage + "/convergence.csv", csv.str());
   // Paper Fig. 3 analogue: the lowest 8 families of the bladed disk.

@@ -63,4 +63,19 @@ double reduced_omega_max(const ReducedBasis& basis) {
   return std::sqrt(std::max(reduced_eigenvalues(basis).maxCoeff(), 0.0));
 }
 
+double ReducedModes::omega_max() const {
+  return std::sqrt(std::max(omega_squared.maxCoeff(), 0.0));
+}
+
+ReducedModes reduced_modes(const ReducedBasis& basis) {
+  if (basis.massless_boundary)
+    throw ReducedIntegrationError("reduced model: " + basis.method +
+                                  " has a massless boundary; its coordinates have no modes");
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness,
+                                                                        basis.mass);
+  if (eigen.info() != Eigen::Success)
+    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed");
+  return {eigen.eigenvectors(), eigen.eigenvalues()};
+}
+
 } // namespace rsi

@@ -31,4 +31,17 @@ Eigen::VectorXd reduced_eigenvalues(const ReducedBasis& basis);
 /// 2 / omega_max.
 double reduced_omega_max(const ReducedBasis& basis);
 
+/// The modes of a reduced model with mass on every coordinate: K^ Psi =
+/// M^ Psi diag(omega^2), Psi^T M^ Psi = I (the integrator's modal
+/// coordinates, reduced_integrator.hpp).
+struct ReducedModes {
+  Eigen::MatrixXd shapes;        ///< Psi, r x r
+  Eigen::VectorXd omega_squared; ///< ascending [rad^2/s^2]
+  double omega_max() const;
+};
+
+/// Throws ReducedIntegrationError for a massless boundary or a failed
+/// eigensolver (M^ not positive definite).
+ReducedModes reduced_modes(const ReducedBasis& basis);
+
 } // namespace rsi

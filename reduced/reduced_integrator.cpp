@@ -17,7 +17,8 @@ bool finite_non_negative(double x) {
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
                                      const ReducedTipContact& contact,
                                      const ReducedDamping& damping,
-                                     const CasingBasis* casing_basis)
+                                     const CasingBasis* casing_basis,
+                                     const ReducedModes* disk_modes)
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
     , m_casing_damping(damping.casing)
@@ -54,8 +55,24 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                   (m_q_damped ? " plus dt/2 C^" : "") +
                                   " is not positive definite");
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
-  m_aq = mq_factor.solve(m_kq);
+  const bool modal = disk_modes != nullptr && !m_q_damped;
+  if (!modal) m_aq = mq_factor.solve(m_kq); // the physical predictor's M^-1 K^ only
   if (m_q_damped) m_bq = dt * (m_mq_inverse * m_cq.asDiagonal());
+  if (modal) {
+    if (disk_modes->shapes.rows() != r || disk_modes->shapes.cols() != r ||
+        disk_modes->omega_squared.size() != r)
+      throw std::invalid_argument("ReducedIntegrator: the reduced modes must be " +
+                                  std::to_string(r) + " x " + std::to_string(r));
+    m_modal_disk = true;
+    m_psi = disk_modes->shapes;
+    m_lambda_disk = disk_modes->omega_squared;
+    m_boundary = basis.boundary_position;
+    m_psi_boundary.resize(static_cast<Eigen::Index>(m_boundary.size()), r);
+    for (size_t i = 0; i < m_boundary.size(); ++i)
+      m_psi_boundary.row(static_cast<Eigen::Index>(i)) = m_psi.row(m_boundary[i]);
+    m_eta = m_eta_prev = m_eta_next = m_deta = Eigen::VectorXd::Zero(r);
+    m_q_boundary = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
+  }
 
   const int nc = casing.n_dofs();
   m_force = Eigen::VectorXd::Zero(nc);
@@ -120,17 +137,33 @@ double ReducedIntegrator::casing_flops_per_step() const {
 
 double ReducedIntegrator::flops_per_step() const {
   const auto r = static_cast<double>(m_kq.rows());
-  double flops = 2.0 * r * r + 4.0 * r + 64.0 * m_contact.n_tips() + casing_flops_per_step();
+  const double disk = m_modal_disk ? 2.0 * static_cast<double>(m_boundary.size()) * r + 5.0 * r
+                                   : 2.0 * r * r + 4.0 * r;
+  double flops = disk + 64.0 * m_contact.n_tips() + casing_flops_per_step();
   if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
   return flops;
 }
 
 double ReducedIntegrator::energy() const {
-  const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
   const Eigen::VectorXd kc_c = m_kc * m_c;
-  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + 0.5 * vc.dot(m_mc * vc) +
-         0.5 * m_c_prev.dot(kc_c);
+  const double casing = 0.5 * vc.dot(m_mc * vc) + 0.5 * m_c_prev.dot(kc_c);
+  if (m_modal_disk)
+    return 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
+           0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta)) + casing;
+  const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
+  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + casing;
+}
+
+Eigen::VectorXd ReducedIntegrator::q() const {
+  if (m_modal_disk) return m_psi * m_eta;
+  return m_q;
+}
+
+void ReducedIntegrator::form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q) {
+  m_q_boundary.noalias() = m_psi_boundary * eta;
+  for (size_t i = 0; i < m_boundary.size(); ++i)
+    q(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
 }
 
 void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
@@ -164,6 +197,14 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
       throw ReducedIntegrationError(
           "reduced integrator: the reduced mass matrix is not positive definite");
     m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
+  }
+  if (m_modal_disk) {
+    // eta = Psi^T M^ q, the same start in modal coordinates; q, q_prev whole.
+    m_eta.noalias() = m_psi.transpose() * (m_mq * m_q);
+    m_eta_prev = m_eta - (0.5 * m_dt * m_dt) * m_lambda_disk.cwiseProduct(m_eta);
+    if (q0.isZero(0.0)) m_eta_prev = m_eta;
+    m_q.noalias() = m_psi * m_eta;
+    m_q_prev.noalias() = m_psi * m_eta_prev;
   }
   m_c = Eigen::VectorXd::Zero(m_kc.rows());
   if (m_modal_casing) {
@@ -411,16 +452,27 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
   m_dq.setZero();
   m_dc.setZero();
   if (m_modal_casing) m_dp.setZero();
+  if (m_modal_disk) m_deta.setZero();
   for (int j = 0; j < m_lambda.size(); ++j) {
     if (m_lambda(j) == 0.0 && m_lambda_t(j) == 0.0) continue;
     const TipContact& tip = tips[j];
     const double f = dt2 * m_lambda(j);
     const double ft = dt2 * m_lambda_t(j);
-    m_dq -= f * m_mq_inverse.col(tip.q_u);
-    if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
+    if (m_modal_disk) {
+      add_disk_correction(tip.q_u, -f);
+      if (ft != 0.0) add_disk_correction(tip.q_v, ft);
+    } else {
+      m_dq -= f * m_mq_inverse.col(tip.q_u);
+      if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
+    }
     add_casing_correction(tip, f, -ft);
   }
-  m_q_next += m_dq;
+  if (m_modal_disk) {
+    m_eta_next += m_deta;
+    form_boundary(m_eta_next, m_q_next);
+  } else {
+    m_q_next += m_dq;
+  }
   apply_casing_correction();
 }
 
@@ -503,11 +555,17 @@ double ReducedIntegrator::step_damping_work() {
 
 StepReport ReducedIntegrator::step() {
   const double dt2 = m_dt * m_dt;
-  m_q_next = 2.0 * m_q - m_q_prev;
-  m_q_next.noalias() -= dt2 * (m_aq * m_q);
-  if (m_q_damped) { // - dt A^-1 C^ (q_n - q_{n-1})
-    m_dq = m_q - m_q_prev;
-    m_q_next.noalias() -= m_bq * m_dq;
+  if (m_modal_disk) {
+    m_eta_next = 2.0 * m_eta - m_eta_prev;
+    m_eta_next -= dt2 * m_lambda_disk.cwiseProduct(m_eta);
+    form_boundary(m_eta_next, m_q_next);
+  } else {
+    m_q_next = 2.0 * m_q - m_q_prev;
+    m_q_next.noalias() -= dt2 * (m_aq * m_q);
+    if (m_q_damped) { // - dt A^-1 C^ (q_n - q_{n-1})
+      m_dq = m_q - m_q_prev;
+      m_q_next.noalias() -= m_bq * m_dq;
+    }
   }
   predict_casing();
   const double t_next = (m_n + 1) * m_dt;
@@ -526,11 +584,17 @@ StepReport ReducedIntegrator::step() {
     m_dq.setZero();
     m_dc.setZero();
     if (m_modal_casing) m_dp.setZero();
+    if (m_modal_disk) m_deta.setZero();
     for (int j = 0; j < m_lambda.size(); ++j) {
       if (m_lambda(j) == 0.0) continue;
       const TipContact& tip = m_predicted[j];
       const double f = dt2 * m_lambda(j);
-      m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
+      if (m_modal_disk) {
+        add_disk_correction(tip.q_u, -f);
+        if (m_mu * tip.sign != 0.0) add_disk_correction(tip.q_v, -f * m_mu * tip.sign);
+      } else {
+        m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
+      }
       if (m_modal_casing) {
         add_casing_correction(tip, f, f * m_mu * tip.sign);
       } else {
@@ -540,7 +604,12 @@ StepReport ReducedIntegrator::step() {
                     (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
       }
     }
-    m_q_next += m_dq;
+    if (m_modal_disk) {
+      m_eta_next += m_deta;
+      form_boundary(m_eta_next, m_q_next);
+    } else {
+      m_q_next += m_dq;
+    }
     apply_casing_correction();
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
@@ -587,6 +656,10 @@ StepReport ReducedIntegrator::step() {
   if (m_modal_casing) {
     m_p_prev.swap(m_p);
     m_p.swap(m_p_next);
+  }
+  if (m_modal_disk) {
+    m_eta_prev.swap(m_eta);
+    m_eta.swap(m_eta_next);
   }
   ++m_n;
 

@@ -54,6 +54,20 @@
 // with c = Phi p they are the modal ones to round-off. The critical step is
 // 2 / max(omega_max(K^, M^), max omega_i).
 //
+// Modal bladed disk (undamped runs given the reduced modes, critical_step.hpp
+// reduced_modes, computed once with the basis): K^ Psi = M^ Psi Lambda,
+// Psi^T M^ Psi = I, q = Psi eta, and the disk's step is mode by mode,
+//   eta~_i = 2 eta_i - eta_{i,prev} - dt^2 lambda_i eta_i,
+// central differences being invariant under the change of coordinates (the
+// same scheme, not an approximation). Only the boundary entries of q are
+// formed, q_B = Psi_B eta (2 n_B r flops: the contact reads nothing else);
+// the correction is eta += dt^2 Psi^T B_q^T lambda (M^-1 = Psi Psi^T, rows
+// of Psi at the tip dofs), and the energy 1/2 |eta_{n+1} - eta_n|^2/dt^2 +
+// 1/2 eta_n^T Lambda eta_{n+1} costs O(r): the physical path's 2 r^2 step
+// and 4 r^2 energy (every row at one step a row) become 2 n_B r and O(r).
+// q() forms Psi eta when asked. A damped disk (C^ is not diagonal in Psi)
+// keeps the physical path, as does a caller giving no modes.
+//
 // Friction law (the case's operating_point.friction_law). "sliding_sign"
 // (the default): the force rows D above, always sliding, as in the first
 // version, operation for operation. "coulomb" (issue 12, stick and slip):
@@ -94,6 +108,7 @@
 #include <vector>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Core>
 #include <Eigen/LU>
 #include <Eigen/SparseCholesky>
@@ -102,6 +117,7 @@
 #include "case_file.hpp"
 #include "casing_basis.hpp"
 #include "coulomb_gauss_seidel.hpp"
+#include "critical_step.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
@@ -131,7 +147,8 @@ public:
   ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
                     const ReducedTipContact& contact,
                     const ReducedDamping& damping = ReducedDamping{},
-                    const CasingBasis* casing_basis = nullptr);
+                    const CasingBasis* casing_basis = nullptr,
+                    const ReducedModes* disk_modes = nullptr);
 
   /// From rest under the casing force f0 at t = 0; f0 is held for the steps
   /// that follow until set_force changes it.
@@ -147,7 +164,10 @@ public:
 
   int step_index() const { return m_n; }
   double time() const { return m_n * m_dt; }
-  const Eigen::VectorXd& q() const { return m_q; }
+  /// The reduced coordinates q_n (formed from eta on the modal path).
+  Eigen::VectorXd q() const;
+  /// Whether the disk runs in modal coordinates (undamped and asked for).
+  bool modal_bladed_disk() const { return m_modal_disk; }
   const Eigen::VectorXd& casing() const { return m_c; }
   const Eigen::VectorXd& gap() const { return m_gap; }
   /// Normal multipliers lambda_n of the last step, one per tip [N].
@@ -216,6 +236,10 @@ private:
   void add_casing_correction(const TipContact& tip, double f_u, double f_v);
   /// c_{n+1} += the correction gathered in m_dc or m_dp.
   void apply_casing_correction();
+  /// Modal disk: m_q_next's boundary entries = Psi_B eta_next.
+  void form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q);
+  /// Modal disk: m_deta += f Psi(position, :)^T (dt^2 in f).
+  void add_disk_correction(int position, double f) { m_deta.noalias() += f * m_psi.row(position).transpose(); }
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
   /// over both parts, with m_q_next, m_c_next = x_{n+1}.
   double step_damping_work();
@@ -236,6 +260,13 @@ private:
   std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
   Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
   Eigen::MatrixXd m_mc_inverse; ///< A_c^-1 (modal casing: Phi diag(1/a) Phi^T)
+  // Modal bladed disk: q = Psi eta.
+  bool m_modal_disk = false;
+  Eigen::MatrixXd m_psi;          ///< Psi, r x r, M^-orthonormal
+  Eigen::VectorXd m_lambda_disk;  ///< Lambda = diag(Psi^T K^ Psi)
+  std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q
+  Eigen::MatrixXd m_psi_boundary; ///< Psi_B: the rows of Psi at m_boundary
+  Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary;
   // Modal casing (casing_basis): c = Phi p.
   bool m_modal_casing = false;
   Eigen::MatrixXd m_phi;             ///< Phi, n_c x m

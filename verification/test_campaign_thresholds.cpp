@@ -23,34 +23,36 @@ TEST(CampaignThresholds, EveryRunUnderItsStoredThreshold) {
   std::ifstream file(root + "/data/thresholds/batailly2007.json");
   ASSERT_TRUE(file) << "missing data/thresholds/batailly2007.json";
   const nlohmann::json thresholds = nlohmann::json::parse(file);
-  std::map<std::pair<std::string, int>, nlohmann::json> by_run;
+  std::map<std::string, nlohmann::json> by_run;
   for (const auto& entry : thresholds.at("runs"))
-    by_run[{entry.at("method"), entry.at("modes")}] = entry;
+    by_run[entry.at("run")] = entry;
 
   const RunResult reference = run_reference(c, {});
   ASSERT_TRUE(reference.summary.completed);
-  std::map<std::pair<std::string, int>, GapErrors> measured;
-  std::printf("%-6s %5s %12s %12s %12s %12s\n", "method", "modes", "e2", "e2 max", "e_inf",
-              "e_inf max");
+  std::map<std::string, GapErrors> measured;
+  std::printf("%-32s %12s %12s %12s %12s\n", "run", "e2", "e2 max", "e_inf", "e_inf max");
   for (const CampaignRun& run : c.campaign) {
-    const ReducedRunResult r = run_reduced(c, run.method, run.modes, {});
-    ASSERT_TRUE(r.run.summary.completed)
-        << run.method << " " << run.modes << ": " << r.run.summary.status;
+    ReducedRunOptions options;
+    options.step = run.step;
+    options.casing_modes = run.casing_modes;
+    ASSERT_EQ(run.selection, "lowest") << run.name();
+    const ReducedRunResult r = run_reduced(c, run.method, run.modes, options);
+    ASSERT_TRUE(r.run.summary.completed) << run.name() << ": " << r.run.summary.status;
     const GapErrors e = blade1_gap_errors(r.run.history, reference.history);
-    measured[{run.method, run.modes}] = e;
-    const auto found = by_run.find({run.method, run.modes});
-    ASSERT_NE(found, by_run.end()) << "no threshold stored for " << run.method << " " << run.modes;
+    measured[run.name()] = e;
+    const auto found = by_run.find(run.name());
+    ASSERT_NE(found, by_run.end()) << "no threshold stored for " << run.name();
     const double e2_max = found->second.at("e2_max");
     const double e_inf_max = found->second.at("e_inf_max");
-    std::printf("%-6s %5d %12.5e %12.5e %12.5e %12.5e\n", run.method.c_str(), run.modes, e.e2,
-                e2_max, e.e_inf, e_inf_max);
+    std::printf("%-32s %12.5e %12.5e %12.5e %12.5e\n", run.name().c_str(), e.e2, e2_max, e.e_inf,
+                e_inf_max);
     // Thresholds: the measured value plus 10 % (data/thresholds/batailly2007.json, "why").
-    EXPECT_LE(e.e2, e2_max) << run.method << " " << run.modes;
-    EXPECT_LE(e.e_inf, e_inf_max) << run.method << " " << run.modes;
+    EXPECT_LE(e.e2, e2_max) << run.name();
+    EXPECT_LE(e.e_inf, e_inf_max) << run.name();
   }
   // Issue 4 acceptance: e2(CB, 60) < e2(CB, 20) < e2(CB, 0).
-  EXPECT_LT(measured.at({"cb", 60}).e2, measured.at({"cb", 20}).e2);
-  EXPECT_LT(measured.at({"cb", 20}).e2, measured.at({"cb", 0}).e2);
+  EXPECT_LT(measured.at("cb-60").e2, measured.at("cb-20").e2);
+  EXPECT_LT(measured.at("cb-20").e2, measured.at("cb-0").e2);
 }
 
 } // namespace

@@ -28,7 +28,7 @@ document = {
            "solver from dense LAPACK to Lanczos moved e2(CB, 20) by 0.6 %, and round-off moves "
            "histories by about 1e-8 relative. A change of the model or of either solver moves these "
            "norms by far more than 10 % (CB 44 -> 60 changes e2 by 19 %).",
-    "runs": [{"method": r["method"], "modes": int(r["modes"]),
+    "runs": [{"run": r["run"], "method": r["method"], "modes": int(r["modes"]),
               "e2_measured": sig(float(r["e2"]), 6), "e_inf_measured": sig(float(r["e_inf"]), 6),
               "e2_max": sig(1.1 * float(r["e2"])), "e_inf_max": sig(1.1 * float(r["e_inf"]))}
              for r in rows],

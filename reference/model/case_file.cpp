@@ -263,6 +263,14 @@ Case parse_case(const json& document, const std::string& source) {
   return c;
 }
 
+std::string CampaignRun::name() const {
+  std::string out = method + "-" + std::to_string(modes);
+  if (selection != "lowest") out += "-" + selection;
+  if (casing_modes > 0) out += "-c" + std::to_string(casing_modes);
+  if (step.kind != StepRule::Kind::case_step) out += "-dt-" + step.name();
+  return out;
+}
+
 std::string StepRule::name() const {
   switch (kind) {
   case Kind::case_step: return "case";

@@ -128,6 +128,11 @@ struct CampaignRun {
   std::string selection = "lowest"; ///< mode_selection.hpp; "lowest" is the first round's
   int casing_modes = 0;             ///< 0: the full casing; N_c: casing_basis.hpp
   StepRule step;
+  /// "cb-64" for the first round's runs; the issue-14 axes append
+  /// "-<selection>" (not lowest), "-c<N_c>" (modal casing) and "-dt-own" or
+  /// "-dt-<step>" (not the case's step): "cb-64-families-c20-dt-own". The
+  /// campaign's runs/ directory and the thresholds' key.
+  std::string name() const;
 };
 
 struct Case {
