@@ -1,49 +1,75 @@
 #include "craig_bampton.hpp"
 
-#include <chrono>
+#include <numeric>
 #include <string>
 
 #include "guyan.hpp"
-#include "modal_analysis.hpp"
 
 namespace rsi {
 
-ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
-                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta) {
+void check_fixed_interface_count(const Partition& p, int eta) {
   if (eta < 0 || eta > p.n_interior())
     throw ReductionError("--modes: Craig-Bampton takes 0 to " + std::to_string(p.n_interior()) +
                          " fixed-interface modes (the interior dofs), got " + std::to_string(eta));
-  const auto start = std::chrono::steady_clock::now();
+}
+
+FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
+                                        const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                        int count) {
+  check_fixed_interface_count(p, count);
+  FixedInterfacePool pool;
+  if (count == 0) {
+    pool.constraint = constraint_modes(stiffness, p);
+    return pool;
+  }
+  const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
+  const Eigen::SparseMatrix<double> m_ii = sparse_block(mass, p.interior, p.interior);
+  const ModalSolver solver = few_modes(count, p.n_interior());
+  if (solver == ModalSolver::sparse && shares_factor(p.n_interior())) {
+    const auto factor =
+        factor_positive_definite(k_ii, m_ii, interior_stiffness_name(p), interior_stiffness_remedy);
+    pool.constraint = constraint_modes(stiffness, p, *factor, k_ii);
+    pool.modes = lowest_modes(k_ii, m_ii, count, *factor);
+  } else {
+    pool.constraint = constraint_modes(stiffness, p);
+    pool.modes = lowest_modes(k_ii, m_ii, count, solver);
+  }
+  return pool;
+}
+
+ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
+                           const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                           const FixedInterfacePool& pool, const std::vector<int>& kept,
+                           std::chrono::steady_clock::time_point start) {
+  const int eta = static_cast<int>(kept.size());
+  check_fixed_interface_count(p, eta);
   ReducedBasis basis;
   basis.method = "cb";
   basis.n_modes = eta;
-  Eigen::MatrixXd psi;
+  basis.requested_modes = eta;
+  basis.candidate_modes = pool.modes.n_modes();
+  basis.mode_index = kept;
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(p.n(), eta + p.n_boundary());
   if (eta > 0) {
-    const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
-    const Eigen::SparseMatrix<double> m_ii = sparse_block(mass, p.interior, p.interior);
-    const ModalSolver solver = few_modes(eta, p.n_interior());
-    Modes fixed;
-    if (solver == ModalSolver::sparse && shares_factor(p.n_interior())) {
-      const auto factor = factor_positive_definite(k_ii, m_ii, interior_stiffness_name(p),
-                                                   interior_stiffness_remedy);
-      psi = constraint_modes(stiffness, p, *factor, k_ii);
-      fixed = lowest_modes(k_ii, m_ii, eta, *factor);
-    } else {
-      psi = constraint_modes(stiffness, p);
-      fixed = lowest_modes(k_ii, m_ii, eta, solver);
-    }
-    t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
-    basis.mode_omega = fixed.omega_squared.cwiseSqrt();
-  } else {
-    psi = constraint_modes(stiffness, p);
+    t.leftCols(eta) = place_rows(p.n(), p.interior, take_columns(pool.modes.shapes, kept));
+    basis.mode_omega = take_entries(pool.modes.omega_squared, kept).cwiseSqrt();
   }
   t.rightCols(p.n_boundary()) =
-      place_rows(p.n(), p.interior, psi) +
+      place_rows(p.n(), p.interior, pool.constraint) +
       place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
   basis.transformation = t;
   finish_basis(stiffness, mass, p.n_boundary(), eta, start, basis);
   return basis;
+}
+
+ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
+                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta) {
+  check_fixed_interface_count(p, eta);
+  const auto start = std::chrono::steady_clock::now();
+  const FixedInterfacePool pool = fixed_interface_pool(stiffness, mass, p, eta);
+  std::vector<int> kept(eta);
+  std::iota(kept.begin(), kept.end(), 0);
+  return craig_bampton(stiffness, mass, p, pool, kept, start);
 }
 
 } // namespace rsi

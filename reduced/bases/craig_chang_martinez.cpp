@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -25,23 +26,21 @@ const char* const stiffness_remedy =
 
 } // namespace
 
-ResidualFlexibilityTransformation
-residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness,
-                                    const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                    int psi, const std::string& name) {
+FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
+                                      const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                      int count, const std::string& name) {
   const int n = p.n();
   const int nb = p.n_boundary();
-  ResidualFlexibilityTransformation out;
-
-  // R(:, B), boundary columns only. With few free modes (Lanczos): eq. 14,
-  // K^-1 E_B - Phi_1 Omega_1^-1 Phi_1B^T. With many, the dense solver has
-  // every mode anyway, and the subtraction would cancel R_B down to its
-  // round-off floor (Bladh et al. 2003): sum over the discarded modes
-  // instead, Phi_2 Omega_2^-1 Phi_2B^T, which is the same R without cancellation.
-  Eigen::MatrixXd phi1;
-  AccurateMatrix r; // r.low: what K^-1 E_B misses below its last bit (sparse path)
-  if (few_modes(psi, n) == ModalSolver::dense) {
-    const Modes all = lowest_modes(stiffness, mass, n, ModalSolver::dense);
+  FreeInterfacePool pool;
+  pool.count = count;
+  // With few free modes (Lanczos): R by eq. 14, K^-1 E_B - Phi_1 Omega_1^-1
+  // Phi_1B^T. With many, the dense solver has every mode anyway, and the
+  // subtraction would cancel R_B down to its round-off floor (Bladh et al.
+  // 2003): R is then summed over the discarded modes instead, Phi_2
+  // Omega_2^-1 Phi_2B^T, the same R without cancellation.
+  if (few_modes(count, n) == ModalSolver::dense) {
+    pool.complete = true;
+    pool.modes = lowest_modes(stiffness, mass, n, ModalSolver::dense);
     // The tail sum needs no K^-1, but it is R only for a nonsingular K: a
     // rigid motion leaves an eigenvalue at the round-off level n eps lambda_max.
     // That level is also the dense solver's resolution (backward error about
@@ -50,38 +49,61 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
     // (unlike the shift-invert path, which resolves small eigenvalues and
     // tests |K phi| against the product's rounding, within_product_rounding);
     // such a stiff model needs the factorized path (issue 13, left open).
-    const double floor = n * std::numeric_limits<double>::epsilon() * all.omega_squared(n - 1);
-    if (!(all.omega_squared(0) > floor)) {
+    const Eigen::VectorXd& w2 = pool.modes.omega_squared;
+    const double floor = n * std::numeric_limits<double>::epsilon() * w2(n - 1);
+    if (!(w2(0) > floor)) {
       std::ostringstream message;
       message << name << ": the bladed-disk stiffness K (" << square_size(n)
-              << ") is singular or indefinite (lowest eigenvalue of K phi = omega^2 M phi "
-              << all.omega_squared(0) << " rad^2/s^2 <= n eps lambda_max = " << floor << "); "
-              << stiffness_remedy;
+              << ") is singular or indefinite (lowest eigenvalue of K phi = omega^2 M phi " << w2(0)
+              << " rad^2/s^2 <= n eps lambda_max = " << floor << "); " << stiffness_remedy;
       throw ReductionError(message.str());
     }
-    phi1 = all.shapes.leftCols(psi);
-    out.mode_omega = all.omega_squared.head(psi).cwiseSqrt();
-    const Eigen::MatrixXd phi2 = all.shapes.rightCols(n - psi);
-    r.value = phi2 * all.omega_squared.tail(n - psi).cwiseInverse().asDiagonal() *
+    return pool;
+  }
+  const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
+  const std::string k_name = name + ": the bladed-disk stiffness K (" + square_size(n) + ")";
+  if (count > 0 && shares_factor(n)) {
+    const auto factor = factor_positive_definite(stiffness, mass, k_name, stiffness_remedy);
+    pool.flexibility = solve_with(*factor, stiffness, unit, k_name);
+    pool.modes = lowest_modes(stiffness, mass, count, *factor);
+  } else {
+    pool.flexibility = solve_positive_definite(stiffness, unit, k_name, stiffness_remedy);
+    if (count > 0) pool.modes = lowest_modes(stiffness, mass, count, ModalSolver::sparse);
+  }
+  return pool;
+}
+
+ResidualFlexibilityTransformation residual_flexibility_transformation(const Partition& p,
+                                                                      const FreeInterfacePool& pool,
+                                                                      const std::vector<int>& kept,
+                                                                      const std::string& name) {
+  const int n = p.n();
+  const int nb = p.n_boundary();
+  const int psi = static_cast<int>(kept.size());
+  ResidualFlexibilityTransformation out;
+
+  // R(:, B), boundary columns only.
+  Eigen::MatrixXd phi1;
+  AccurateMatrix r; // r.low: what K^-1 E_B misses below its last bit (sparse path)
+  if (psi > 0) {
+    phi1 = take_columns(pool.modes.shapes, kept);
+    out.mode_omega = take_entries(pool.modes.omega_squared, kept).cwiseSqrt();
+  }
+  if (pool.complete) {
+    std::vector<bool> is_kept(n, false);
+    for (int i : kept)
+      is_kept[i] = true;
+    std::vector<int> dropped;
+    for (int i = 0; i < n; ++i)
+      if (!is_kept[i]) dropped.push_back(i);
+    const Eigen::MatrixXd phi2 = take_columns(pool.modes.shapes, dropped);
+    r.value = phi2 * take_entries(pool.modes.omega_squared, dropped).cwiseInverse().asDiagonal() *
               take_rows(phi2, p.boundary).transpose();
   } else {
-    const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
-    const std::string k_name = name + ": the bladed-disk stiffness K (" + square_size(n) + ")";
-    Modes free;
-    if (psi > 0 && shares_factor(n)) {
-      const auto factor = factor_positive_definite(stiffness, mass, k_name, stiffness_remedy);
-      r = solve_with(*factor, stiffness, unit, k_name);
-      free = lowest_modes(stiffness, mass, psi, *factor);
-    } else {
-      r = solve_positive_definite(stiffness, unit, k_name, stiffness_remedy);
-      if (psi > 0) free = lowest_modes(stiffness, mass, psi, ModalSolver::sparse);
-    }
-    if (psi > 0) {
-      phi1 = free.shapes;
-      out.mode_omega = free.omega_squared.cwiseSqrt();
-      r.value -= phi1 * free.omega_squared.cwiseInverse().asDiagonal() *
+    r = pool.flexibility;
+    if (psi > 0)
+      r.value -= phi1 * take_entries(pool.modes.omega_squared, kept).cwiseInverse().asDiagonal() *
                  take_rows(phi1, p.boundary).transpose();
-    }
   }
   const Eigen::MatrixXd r_b = take_rows(r.value, p.boundary);
 
@@ -130,26 +152,55 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
   return out;
 }
 
-ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
-                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                  int psi) {
-  const int n = p.n();
-  const int nb = p.n_boundary();
-  if (psi < 0 || psi > n - nb)
-    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(n - nb) +
+ResidualFlexibilityTransformation
+residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness,
+                                    const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                    int psi, const std::string& name) {
+  const FreeInterfacePool pool = free_interface_pool(stiffness, mass, p, psi, name);
+  std::vector<int> kept(psi);
+  std::iota(kept.begin(), kept.end(), 0);
+  return residual_flexibility_transformation(p, pool, kept, name);
+}
+
+void check_free_interface_count(const Partition& p, int psi) {
+  const int available = p.n() - p.n_boundary();
+  if (psi < 0 || psi > available)
+    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(available) +
                          " free-interface modes (dofs minus boundary dofs), got " +
                          std::to_string(psi));
-  const auto start = std::chrono::steady_clock::now();
+}
+
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  const FreeInterfacePool& pool, const std::vector<int>& kept,
+                                  std::chrono::steady_clock::time_point start) {
+  const int psi = static_cast<int>(kept.size());
+  check_free_interface_count(p, psi);
   ReducedBasis basis;
   basis.method = "ccm";
   basis.n_modes = psi;
+  basis.requested_modes = psi;
+  basis.candidate_modes = pool.count;
+  basis.mode_index = kept;
   ResidualFlexibilityTransformation t =
-      residual_flexibility_transformation(stiffness, mass, p, psi, "Craig-Chang-Martinez");
+      residual_flexibility_transformation(p, pool, kept, "Craig-Chang-Martinez");
   basis.transformation = std::move(t.transformation);
   basis.cond_rb = t.cond_rb;
   basis.mode_omega = std::move(t.mode_omega);
-  finish_basis(stiffness, mass, nb, 0, start, basis);
+  finish_basis(stiffness, mass, p.n_boundary(), 0, start, basis);
   return basis;
+}
+
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  int psi) {
+  check_free_interface_count(p, psi);
+  const auto start = std::chrono::steady_clock::now();
+  const FreeInterfacePool pool =
+      free_interface_pool(stiffness, mass, p, psi, "Craig-Chang-Martinez");
+  std::vector<int> kept(psi);
+  std::iota(kept.begin(), kept.end(), 0);
+  return craig_chang_martinez(stiffness, mass, p, pool, kept, start);
 }
 
 } // namespace rsi

@@ -1,6 +1,6 @@
 #pragma once
 // Craig-Chang-Martinez (paper eqs. 8-20): psi free-interface modes Phi_1
-// (the lowest modes of the whole bladed disk) and n_B attachment modes
+// (modes of the whole bladed disk, the lowest unless selected otherwise) and n_B attachment modes
 // through the residual flexibility R = K^-1 - Phi_1 Omega_1^-1 Phi_1^T
 // (eq. 14), transformed to the coordinates q = (q_B, u_1) (eq. 20):
 //   u_B = q_B,
@@ -15,13 +15,19 @@
 // K must be positive definite (a supported part: the hub clamped); a
 // singular or indefinite K (CHOLMOD pivots, or the lowest eigenvalue on the
 // dense path) is refused with ReductionError naming K.
+// By count: the psi lowest free modes. By selection (mode_selection.hpp):
+// any psi of a pool of the lowest modes, R then the residual of the kept ones.
 // Valid range: 0 <= psi <= n - n_B.
 
+#include <chrono>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "accurate_solve.hpp"
+#include "modal_analysis.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
 
@@ -36,14 +42,52 @@ struct ResidualFlexibilityTransformation {
   Eigen::VectorXd mode_omega;     ///< omega_i of the psi free modes Phi_1 [rad/s]
 };
 
+/// The candidates of a residual-flexibility basis, computed as the
+/// count-based builder computes them for `count` modes: with few modes
+/// (few_modes(count, n) sparse) the `count` lowest free modes by Lanczos and
+/// K^-1 E_B (refined, CHOLMOD); with many, every mode (LAPACK dense), R then
+/// being the sum over the modes not kept (no K^-1, no cancellation).
+struct FreeInterfacePool {
+  Modes modes;   ///< ascending; every mode when `complete`, else the `count` lowest
+  int count = 0; ///< the candidates are modes 0 .. count-1
+  bool complete = false;
+  AccurateMatrix flexibility; ///< K^-1 E_B, n x n_B (only when not complete)
+};
+
+/// Throws ReductionError, its message starting with `name`, for a singular
+/// or indefinite K. `count` in [0, n - n_B] (not checked here).
+FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
+                                      const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                      int count, const std::string& name);
+
+/// T and cond(R_B) keeping the pool's modes `kept` (ascending indices below
+/// pool.count) as Phi_1. Throws ReductionError, its message starting with
+/// `name`, for a numerically singular R_B.
+ResidualFlexibilityTransformation residual_flexibility_transformation(const Partition& p,
+                                                                      const FreeInterfacePool& pool,
+                                                                      const std::vector<int>& kept,
+                                                                      const std::string& name);
+
 /// T and cond(R_B) for psi in [0, n - n_B] (not checked here: the callers
-/// state their own range). Throws ReductionError, its message starting with
-/// `name`, for a singular or indefinite K or a numerically singular R_B.
+/// state their own range): the pool of psi modes, every one kept. Throws
+/// ReductionError, its message starting with `name`, for a singular or
+/// indefinite K or a numerically singular R_B.
 ResidualFlexibilityTransformation
 residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness,
                                     const Eigen::SparseMatrix<double>& mass, const Partition& p,
                                     int psi, const std::string& name);
 
+/// ReductionError unless 0 <= psi <= n - n_B.
+void check_free_interface_count(const Partition& p, int psi);
+
+/// The basis keeping the pool's modes `kept` (ascending), in that order;
+/// `start` is when the work began (build_seconds). mode_index = kept.
+ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
+                                  const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                                  const FreeInterfacePool& pool, const std::vector<int>& kept,
+                                  std::chrono::steady_clock::time_point start);
+
+/// The psi lowest free-interface modes.
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
                                   int psi);

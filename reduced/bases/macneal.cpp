@@ -1,6 +1,7 @@
 #include "macneal.hpp"
 
 #include <chrono>
+#include <numeric>
 #include <string>
 #include <utility>
 
@@ -22,6 +23,10 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
   ReducedBasis basis;
   basis.method = "macneal";
   basis.n_modes = psi;
+  basis.requested_modes = psi;
+  basis.candidate_modes = psi;
+  basis.mode_index.resize(psi);
+  std::iota(basis.mode_index.begin(), basis.mode_index.end(), 0);
   ResidualFlexibilityTransformation t =
       residual_flexibility_transformation(stiffness, mass, p, psi, "MacNeal");
   basis.transformation = std::move(t.transformation);

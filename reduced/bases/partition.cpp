@@ -56,4 +56,20 @@ Eigen::MatrixXd take_rows(const Eigen::Ref<const Eigen::MatrixXd>& a,
   return out;
 }
 
+Eigen::MatrixXd take_columns(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                             const std::vector<int>& columns) {
+  Eigen::MatrixXd out(a.rows(), static_cast<Eigen::Index>(columns.size()));
+  for (size_t j = 0; j < columns.size(); ++j)
+    out.col(static_cast<Eigen::Index>(j)) = a.col(columns[j]);
+  return out;
+}
+
+Eigen::VectorXd take_entries(const Eigen::Ref<const Eigen::VectorXd>& a,
+                             const std::vector<int>& entries) {
+  Eigen::VectorXd out(static_cast<Eigen::Index>(entries.size()));
+  for (size_t j = 0; j < entries.size(); ++j)
+    out(static_cast<Eigen::Index>(j)) = a(entries[j]);
+  return out;
+}
+
 } // namespace rsi

@@ -36,6 +36,14 @@ Eigen::MatrixXd place_rows(int n, const std::vector<int>& rows,
 /// Gather: the rows `rows` of `a`.
 Eigen::MatrixXd take_rows(const Eigen::Ref<const Eigen::MatrixXd>& a, const std::vector<int>& rows);
 
+/// Gather: the columns `columns` of `a`, in that order.
+Eigen::MatrixXd take_columns(const Eigen::Ref<const Eigen::MatrixXd>& a,
+                             const std::vector<int>& columns);
+
+/// Gather: the entries `entries` of `a`, in that order.
+Eigen::VectorXd take_entries(const Eigen::Ref<const Eigen::VectorXd>& a,
+                             const std::vector<int>& entries);
+
 /// Lanczos (sparse) for a few modes, the dense solver when many are asked
 /// (a quarter of the dofs or more, where Lanczos gains nothing).
 inline ModalSolver few_modes(int count, int n) {

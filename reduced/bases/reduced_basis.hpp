@@ -37,6 +37,24 @@ struct ReducedBasis {
   double cond_rb = 0.0;       ///< cond(R_B) (CCM, MacNeal; 0 otherwise)
   double build_seconds = 0.0; ///< time to build T, K^, M^
 
+  // The mode selection (mode_selection.hpp). A count-based builder keeps
+  // the lowest modes: selection "lowest", requested_modes = n_modes,
+  // mode_index 0 .. n_modes-1.
+  std::string selection = "lowest"; ///< to_string(ModeSelection)
+  /// The count asked for. n_modes is the count kept: a selection that
+  /// keeps whole pairs or families rounds down (n_modes <= requested_modes).
+  int requested_modes = 0;
+  int candidate_modes = 0; ///< the pool: how many of the lowest modes it chose from
+  /// Index of each kept mode in the ascending spectrum (CB: fixed-interface,
+  /// CCM and MacNeal: free-interface), in the order of mode_omega.
+  std::vector<int> mode_index;
+  /// Nodal diameter of each kept mode, in the order of mode_omega; empty
+  /// unless reduce_bladed_disk was given a SelectionContext.
+  std::vector<int> mode_nodal_diameter;
+  /// Participation measure of each kept mode (participation.hpp), in the
+  /// order of mode_omega; empty unless the selection is "participation".
+  Eigen::VectorXd mode_participation;
+
   int n_reduced() const { return static_cast<int>(transformation.cols()); }
 };
 

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include "bladed_disk.hpp"
+#include "mode_selection.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
@@ -23,5 +24,19 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
 /// reduce() of the bladed disk with its tip boundary.
 ReducedBasis reduce_bladed_disk(const BladedDisk& bladed_disk, const std::string& method,
                                 int modes);
+
+/// The same with the modes chosen by a strategy (mode_selection.hpp) out of
+/// a pool of the lowest candidate_pool_size(...) modes; `modes` is the count
+/// asked for, the basis's n_modes the count kept (families, forced and
+/// participation keep whole pairs or families and round down). Records the
+/// strategy, the count asked, the pool, and the kept modes' indices, nodal
+/// diameters and (participation) measures in the basis. `lowest` gives the
+/// count-based basis bit for bit. cb and ccm take every strategy; guyan
+/// (modes = 0) and macneal only `lowest` (ReductionError otherwise).
+/// Throws ReductionError as reduce(), and for a context that does not
+/// describe the disk (check_context) or a spectrum that is not cyclic
+/// (cyclic_units).
+ReducedBasis reduce_bladed_disk(const BladedDisk& bladed_disk, const std::string& method, int modes,
+                                ModeSelection selection, const SelectionContext& context);
 
 } // namespace rsi
