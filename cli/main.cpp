@@ -217,6 +217,14 @@ int main(int argc, char** argv) {
                        "N_c modes plus a static correction for the forcing")
           ->capture_default_str()
           ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
+  CLI::Option* simulate_selection =
+      simulate_cmd
+          ->add_option("--selection", simulate.selection,
+                       "reduced methods: how the kept modes are chosen: lowest, families "
+                       "(whole nodal-diameter families), forced (the forcing's diameters and "
+                       "their aliases first) or participation (boundary participation)")
+          ->capture_default_str()
+          ->check(one_of({"lowest", "families", "forced", "participation"}));
   simulate_cmd->add_option("--out", simulate.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
@@ -316,7 +324,8 @@ int main(int argc, char** argv) {
       if (simulate_modes->count() > 0 && simulate.method == "full")
         throw rsi::UsageError("--modes: only for a reduced method (the full reference keeps "
                               "no modes); drop it");
-      for (const CLI::Option* o : {simulate_step, simulate_safety, simulate_casing})
+      for (const CLI::Option* o :
+           {simulate_step, simulate_safety, simulate_casing, simulate_selection})
         if (o->count() > 0 && simulate.method == "full")
           throw rsi::UsageError(o->get_name() +
                                 ": only for a reduced method (the full reference runs the whole "

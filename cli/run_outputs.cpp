@@ -114,7 +114,10 @@ std::string summary_json(const RunSummary& s) {
   j["basis_seconds"] = s.basis_seconds;
   j["casing_basis"] = s.casing_basis;
   j["time_step_rule"] = s.time_step_rule;
-  if (!s.selection.empty()) j["selection"] = s.selection;
+  if (!s.selection.empty()) {
+    j["selection"] = s.selection;
+    j["modes_kept"] = s.modes_kept;
+  }
   j["wall_seconds"] = s.wall_seconds;
   j["integration_seconds"] = s.integration_seconds;
   j["max_penetration"] = s.max_penetration;

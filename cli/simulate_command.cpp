@@ -72,9 +72,10 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   if (is_component_case(document)) {
     // A component run takes its step from its rubbing object (each run at
     // its own step already) and has no casing to reduce.
-    if (options.time_step != "case" || options.casing_modes != 0)
-      throw UsageError("--time-step, --casing-modes: only for the paper's case; a component "
-                       "case sets its steps in its rubbing object");
+    if (options.time_step != "case" || options.casing_modes != 0 || options.selection != "lowest")
+      throw UsageError("--time-step, --casing-modes, --selection: only for the paper's case; a "
+                       "component case sets its steps in its rubbing object and keeps the lowest "
+                       "modes");
     return run_component_simulate(options, parse_component_case(document, options.case_path),
                                   output);
   }
@@ -98,6 +99,7 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   run.step = parse_step_option(options.time_step, options.step_safety);
   run.step_key = "--time-step";
   run.casing_modes = options.casing_modes;
+  run.selection = options.selection;
 
   // Streamed output: the history rows (and field rows) are formatted and
   // written to temporary files as the run produces them, never kept, so the

@@ -25,7 +25,13 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
     const double dt = options.step.kind == StepRule::Kind::given ? options.step.step : c.time.step;
     check_time_step_bound(dt, casing.stiffness, casing.mass, options.run.force, "casing");
   }
-  return run_reduced(c, reduce_bladed_disk(assemble_bladed_disk(c), method, modes), options);
+  const BladedDisk bd = assemble_bladed_disk(c);
+  if (options.selection == "lowest")
+    return run_reduced(c, reduce_bladed_disk(bd, method, modes), options);
+  return run_reduced(c,
+                     reduce_bladed_disk(bd, method, modes, parse_mode_selection(options.selection),
+                                        selection_context(bd, c.forcing.nodal_diameter)),
+                     options);
 }
 
 ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
@@ -71,6 +77,8 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   s.n_dofs = out.basis.n_reduced() + (modal_casing ? out.casing_basis.size() : casing.n_dofs());
   s.basis_seconds = basis.build_seconds + out.casing_basis.build_seconds + disk_modes_seconds;
   s.casing_basis = modal_casing ? out.casing_basis.name() : "full";
+  s.selection = basis.selection;
+  s.modes_kept = basis.n_modes;
   s.time_step_rule = options.step.name();
   const double omega_bladed_disk =
       modal_disk ? disk_modes.omega_max() : reduced_omega_max(out.basis);

@@ -36,6 +36,9 @@ struct ReducedRunOptions {
   /// 0: the full casing; N_c >= 1: the casing in its lowest N_c modes plus
   /// the static correction for the forcing (casing_basis.hpp).
   int casing_modes = 0;
+  /// How the kept modes are chosen (mode_selection.hpp): "lowest" (the
+  /// first round's bases), "families", "forced" or "participation".
+  std::string selection = "lowest";
 };
 
 struct ReducedRunResult {

@@ -99,6 +99,7 @@ struct RunSummary {
   std::string casing_basis = "full";    ///< "full" or casing_basis.hpp's name ("modal-20+s")
   std::string time_step_rule = "case";  ///< StepRule::name(): "case", "own" or the given step
   std::string selection;                ///< mode selection of a reduced run ("" for full)
+  int modes_kept = 0;                   ///< the reduced basis's kept modes (0 for full)
   double wall_seconds = 0.0;            ///< whole run: assembly, omega_max, integration
   double integration_seconds = 0.0;
   double max_penetration = 0.0;       ///< [m]
