@@ -26,6 +26,7 @@
 #include "reference_run.hpp"
 #include "report_script.hpp"
 #include "run_outputs.hpp"
+#include "run_step.hpp"
 #include "staged_output.hpp"
 
 namespace rsi {
@@ -75,6 +76,10 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
   int disk_dofs = 0;
   {
+    // A given step must divide the output interval: refused before any run.
+    for (const CampaignRun& r : c.campaign)
+      if (r.step.kind == StepRule::Kind::given)
+        run_step(r.step, c.time, 1.0, c.source + ": key 'campaign': time_step of " + r.name());
     const int casing_dofs = assemble_casing(c).n_dofs();
     for (const CampaignRun& r : c.campaign)
       if (r.casing_modes > casing_dofs)
@@ -196,11 +201,11 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       stage + "/modes-bladed-disk.csv",
       modes_table(c, "bladed-disk", std::min(8 * c.bladed_disk.n_blades, disk_dofs)).csv);
 
-  std::printf("%-28s %10s %10s %9s %8s %10s\n", "run", "e2", "e_inf", "wall_s", "speedup",
+  std::printf("%-34s %10s %10s %9s %8s %10s\n", "run", "e2", "e_inf", "wall_s", "speedup",
               "dt");
   for (size_t i = 0; i < runs.size(); ++i) {
     if (!runs[i].error.empty()) continue;
-    std::printf("%-28s %10.4e %10.4e %9.4f %8.2f %10.3e\n", run_name(runs[i].run).c_str(),
+    std::printf("%-34s %10.4e %10.4e %9.4f %8.2f %10.3e\n", run_name(runs[i].run).c_str(),
                 errors[i].e2, errors[i].e_inf, runs[i].result.summary.wall_seconds,
                 reference.summary.wall_seconds / runs[i].result.summary.wall_seconds,
                 runs[i].result.summary.dt);

@@ -98,6 +98,12 @@ variant("damping-no-beta", lambda d: d.update(damping={"rayleigh": {"alpha": 1.0
 variant("damping-ratio", lambda d: d.update(damping={"modal_ratio": 1.0}))
 variant("damping-ratio-negative", lambda d: d.update(damping={"modal_ratio": -0.01}))
 variant("damping-unknown", lambda d: d.update(damping={"zeta": 0.01}))
+variant("campaign-selection", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "selection": "best"}]))
+variant("campaign-casing-many", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "casing_modes": [157]}]))
+variant("campaign-casing-negative", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "casing_modes": [-1]}]))
+variant("campaign-step-word", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "time_step": ["fast"]}]))
+variant("campaign-step-divide", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "casing_modes": [20], "time_step": [4e-6]}]))
+variant("campaign-safety", lambda d: d.update(campaign=[{"method": "cb", "modes": [10], "time_step": ["own"], "step_safety": 1.5}]))
 variant("damping-number", lambda d: d.update(damping=0.01))
 variant("friction-law", lambda d: d["operating_point"].update(friction_law="stick"))
 # Counts beyond what a run holds (issue 13, class 1): 1e13 steps; 1e9 steps
@@ -216,6 +222,21 @@ expect 2 "time.duration': over time.step gives 1e+13 steps" -- "$rsi" campaign "
 expect 2 "time.output_every': with time.duration / time.step = 1e+09 steps, history.csv would take about 1176 GB (limit 100 GB)" -- "$rsi" simulate "$work/huge-history.json" --out "$work/out"
 # Options the method does not use are refused, not ignored (issue 13, class 7).
 expect 2 "--modes: only for a reduced method (the full reference keeps no modes)" -- "$rsi" simulate "$good" --method full --modes 10 --out "$work/out"
+# Issue 14 axes: steps that do not divide the output interval, unknown names, counts past the casing.
+expect 2 "--time-step: only for a reduced method" -- "$rsi" simulate "$good" --method full --time-step own --out "$work/out"
+expect 2 "--casing-modes: only for a reduced method" -- "$rsi" simulate "$good" --method full --casing-modes 20 --out "$work/out"
+expect 2 "--step-safety: only with --time-step own" -- "$rsi" simulate "$good" --method cb --modes 10 --step-safety 0.5 --out "$work/out"
+expect 2 "--time-step: must be case, own or a step in seconds > 0, got 'fast'" -- "$rsi" simulate "$good" --method cb --modes 10 --time-step fast --out "$work/out"
+expect 2 "--time-step: a step of 4e-06 s must divide the output interval" -- "$rsi" simulate "$good" --method cb --modes 10 --casing-modes 20 --time-step 4e-6 --out "$work/out"
+expect 2 "casing_modes: must be in [0, 156]" -- "$rsi" simulate "$good" --method cb --modes 10 --casing-modes 157 --out "$work/out"
+expect 2 "--selection: must be" -- "$rsi" simulate "$good" --method cb --modes 10 --selection best --out "$work/out"
+expect 2 "stability limit" -- "$rsi" simulate "$good" --method cb --modes 10 --time-step 2.5e-5 --out "$work/out"
+expect 2 "campaign[0].selection': must be \"lowest\"" -- "$rsi" campaign "$work/campaign-selection.json" --out "$work/out"
+expect 2 "casing_modes 157 of cb-10: must be in [0, 156]" -- "$rsi" campaign "$work/campaign-casing-many.json" --out "$work/out"
+expect 2 "campaign[0].casing_modes': must hold integers in [0, 400000]" -- "$rsi" campaign "$work/campaign-casing-negative.json" --out "$work/out"
+expect 2 "campaign[0].time_step': must hold \"case\", \"own\" or steps > 0" -- "$rsi" campaign "$work/campaign-step-word.json" --out "$work/out"
+expect 2 "key 'campaign': time_step of cb-10-c20-dt-4e-06: a step of 4e-06 s must divide the output interval" -- "$rsi" campaign "$work/campaign-step-divide.json" --out "$work/out"
+expect 2 "campaign[0].step_safety': must be in (0, 1)" -- "$rsi" campaign "$work/campaign-safety.json" --out "$work/out"
 expect 2 "bladed_disk: no blade element length puts the tip at tip_radius (GSL root finder" -- "$rsi" modes "$work/gsl-overflow.json" --out "$work/out"
 for cmd in simulate modes; do
   expect 2 "key 'friction_coefficient' appears twice in one object" -- "$rsi" "$cmd" "$work/duplicate-key.json" --out "$work/out"
