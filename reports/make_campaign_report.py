@@ -1,13 +1,21 @@
 #!/usr/bin/python3
-"""Method-comparison report of one campaign (SPEC §5, issue 5): figures and
-report.md from the outputs of `rsi campaign CASE --out DIR`, which runs this
-script at its end.
+"""Method-comparison report of one campaign (SPEC §5, issue 5; the
+frontier of SPEC §8, issue 14): figures and report.md from the outputs of
+`rsi campaign CASE --out DIR`, which runs this script at its end.
 
 Usage: make_campaign_report.py DIR
 Reads DIR/convergence.csv, DIR/modes-bladed-disk.csv and
-DIR/runs/<method>-<modes>/{history.csv,summary.json}; writes DIR/report.md
-and DIR/*.png. Every number in the text is read from those files; the
-paper's numbers are quoted from Batailly et al. (ASME IDETC 2007).
+DIR/runs/<run>/{history.csv,summary.json}; writes DIR/report.md and
+DIR/*.png (names within the campaign's output set, cli/output_sets.cpp).
+Every number in the text is read from those files; the paper's numbers are
+quoted from Batailly et al. (ASME IDETC 2007).
+
+Runs are keyed by convergence.csv's `run` column. The paper's comparison
+(findings, Figs. 10-14, mode-count guidance) uses the first-round runs
+only: lowest-frequency selection, full casing, the case's time step
+(summary.json time_step_rule "case"), one per (method, modes). The
+second-round axes (selection, casing basis, time step) are reported by
+campaign_frontier.py; every section is guarded on the runs present.
 """
 import csv
 import json
@@ -20,6 +28,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+import campaign_frontier as frontier
+
 # Batailly et al. 2007, section 5.4 and Fig. 14.
 PAPER_REFERENCE_S = 1031.0
 PAPER_SPEEDUP = {("ccm", 0): 6.4, ("ccm", 88): 5.4}  # 84.4 % and 81.5 % saved
@@ -27,16 +37,44 @@ PAPER_FIRST_FAMILY_HZ = 44.0
 
 out = sys.argv[1]
 here = os.path.dirname(os.path.abspath(__file__))
-rows = list(csv.DictReader(open(f"{out}/convergence.csv")))
-for r in rows:
-    r["modes"] = int(r["modes"])
-    for k in ("e2", "e_inf", "wall_s", "speedup"):
-        r[k] = float(r[k])
-    r["name"] = f"{r['method']}-{r['modes']}"
-    r["summary"] = json.load(open(f"{out}/runs/{r['name']}/summary.json"))
+
+
+def load_rows():
+    """convergence.csv's rows with their summaries; the columns of the
+    second round (run, dt, selection, casing, basis_s, speedup_with_basis,
+    modes_kept) fall back to the summary or the first round's meaning when a
+    campaign lacks them."""
+    rows = list(csv.DictReader(open(f"{out}/convergence.csv")))
+    for r in rows:
+        r["modes"] = int(r["modes"])
+        for k in ("e2", "e_inf", "wall_s", "speedup"):
+            r[k] = float(r[k])
+        r["name"] = r.get("run") or f"{r['method']}-{r['modes']}"
+        r["summary"] = s = json.load(open(f"{out}/runs/{r['name']}/summary.json"))
+        r["dt"] = float(r.get("dt") or s["dt"])
+        r["basis_s"] = float(r.get("basis_s") or s.get("basis_seconds", 0.0))
+        r["selection"] = r.get("selection") or s.get("selection", "lowest")
+        r["casing"] = r.get("casing") or s.get("casing_basis", "full")
+        r["rule"] = s.get("time_step_rule", "case")
+        r["modes_kept"] = int(r.get("modes_kept") or s.get("modes_kept", r["modes"]))
+    ref = next(r for r in rows if r["method"] == "full")
+    for r in rows:
+        r["speedup_with_basis"] = float(r.get("speedup_with_basis") or
+                                        ref["wall_s"] / (r["wall_s"] + r["basis_s"]))
+    return rows, ref
+
+
+def first_round(r):
+    """The paper's axes only: lowest selection, full casing, the case's step."""
+    return r["selection"] in ("lowest", "-") and r["casing"] == "full" and r["rule"] == "case"
+
+
+all_rows, ref = load_rows()
+rows = [r for r in all_rows if first_round(r)]  # the reference is one of them
 by = {(r["method"], r["modes"]): r for r in rows}
-ref = by[("full", 0)]
+named = {r["name"]: r for r in all_rows}
 reduced = [r for r in rows if r["method"] != "full"]
+every_reduced = [r for r in all_rows if r["method"] != "full"]
 
 
 def history(name):
@@ -67,11 +105,17 @@ def gflops(r):
     return s["flops_per_step"] * s["steps"] / s["integration_seconds"] / 1e9
 
 
+def span(values):
+    """'lo-hi s', or 'all x s' when they print the same."""
+    lo, hi = f"{min(values):.3e}", f"{max(values):.3e}"
+    return f"all {lo} s" if lo == hi else f"{lo}-{hi} s"
+
+
 def fmt_list(items):
     return ", ".join(items[:-1]) + " and " + items[-1] if len(items) > 1 else items[0]
 
 
-t_ref, g_ref, l_ref, e_ref, w_ref = history("full-0")
+t_ref, g_ref, l_ref, e_ref, w_ref = history(ref["name"])
 n_blades = len(g_ref)
 
 # Paper Fig. 3: frequency against nodal diameter.
@@ -92,7 +136,7 @@ for method, title in (("cb", "Craig-Bampton (eta fixed-interface modes)"),
         ax.plot([t_ref[i] for i in keep], [1e3 * g_ref[0][i] for i in keep], "k-", lw=2,
                 label="reference (full FE)")
         for m in shown[method]:
-            t, g, _, _, _ = history(f"{method}-{m}")
+            t, g, _, _, _ = history(by[(method, m)]["name"])
             ax.plot([t[i] for i in keep], [1e3 * g[0][i] for i in keep], lw=1, label=f"{method.upper()} {m}")
         ax.axhline(0.0, color="tab:red", lw=0.8)
         ax.set_xlim(0, t_max)
@@ -114,7 +158,8 @@ for method, marker in (("cb", "o"), ("ccm", "s")):
 ax.set_xlabel("number of modes (eta for CB, psi for CCM), plus the boundary coordinates")
 ax.set_ylabel("error of the blade-1 gap history")
 ax.grid(alpha=0.3, which="both")
-ax.legend(fontsize=8)
+if ax.get_legend_handles_labels()[0]:
+    ax.legend(fontsize=8)
 fig.tight_layout()
 save(fig, f"error_vs_modes.png")
 plt.close(fig)
@@ -132,11 +177,11 @@ save(fig, f"relative_time.png")
 plt.close(fig)
 
 # KKT residuals and energy balance against time, at the output steps.
-traced = [n for n in ("full-0", "cb-44", "ccm-44") if n in {r["name"] for r in rows}]
+traced = [n for n in (ref["name"], "cb-44", "ccm-44") if n in named and first_round(named[n])]
 fig, axes = plt.subplots(3, 1, figsize=(8, 8), sharex=True)
 for name in traced:
     t, g, lam, e, w = history(name)
-    e0 = by[tuple([name.split("-")[0], int(name.split("-")[1])])]["summary"]["initial_energy"]
+    e0 = named[name]["summary"]["initial_energy"]
     axes[0].semilogy(t, [max(1e-16, max(-gk[i] for gk in g)) for i in range(len(t))], lw=0.8, label=name)
     axes[1].semilogy(t, [max(1e-16, max(abs(lk[i] * gk[i]) for lk, gk in zip(lam, g))) for i in range(len(t))],
                      lw=0.8, label=name)
@@ -158,7 +203,7 @@ for name in traced:
     t, _, _, e, w = history(name)
     ax.plot(t, e, lw=1.2, label=f"{name}: energy E")
 ax.plot(t_ref, [ref["summary"]["initial_energy"] + x for x in w_ref], "k--", lw=0.8,
-        label="full-0: E0 + W_ext + W_contact - W_damp")
+        label=f"{ref['name']}: E0 + W_ext + W_contact - W_damp")
 ax.set_xlabel("time [ms]")
 ax.set_ylabel("[J]")
 ax.grid(alpha=0.3)
@@ -191,7 +236,11 @@ L = ["# Method comparison: reduced models against the full reference", "",
      "(on the project's 2-core virtual machine by up to ±30 %, bench/RESULTS.md).", "",
      f"Reference (full FE): {rs['dofs']} dofs, {rs['steps']} steps of {rs['dt']:.1e} s, "
      f"wall {rs['wall_seconds']:.3f} s ({rs['integration_seconds']:.3f} s in the time loop). "
-     "All runs of the tables were measured in one campaign (`--jobs` of them at a time).", ""]
+     "All runs of the tables were measured in one campaign (`--jobs` of them at a time), and every speedup "
+     "is a ratio of two wall times of this one campaign.", "",
+     f"{len(every_reduced)} reduced runs: {len(reduced)} on the paper's axes (the first round: lowest-frequency "
+     f"modes, full casing, the case's time step), {len(every_reduced) - len(reduced)} on the second round's "
+     "(mode selection, reduced casing, own time step). The paper's comparison uses the first round only.", ""]
 
 L += ["## What the paper found, and what we find", ""]
 ff = f"{min(first_family):.3f}-{max(first_family):.3f} Hz"
@@ -229,6 +278,8 @@ if pairs:
              + ".")
 for method in ("cb", "ccm"):
     sel = sorted((r for r in reduced if r["method"] == method), key=lambda r: r["modes"])
+    if len(sel) < 2:
+        continue
     ups = [f"{a['modes']} -> {b['modes']}" for a, b in zip(sel, sel[1:]) if b["e2"] > a["e2"]]
     cuts = [a["modes"] for a in sel if a["modes"] % n_blades]
     if ups:
@@ -239,14 +290,15 @@ for method in ("cb", "ccm"):
     else:
         L.append(f"   - {method.upper()}: e2 decreases at every count of the campaign.")
 short = any(by[k]["speedup"] < v for k, v in PAPER_SPEEDUP.items() if k in by)
+compared = [f"{m.upper()}-{k}: {by[(m, k)]['speedup']:.2f}x here against {v}x in the paper"
+            for (m, k), v in PAPER_SPEEDUP.items() if (m, k) in by]
 L.append("4. **Speedups (Fig. 14, §5.4: reference 1031 s; CCM with the 44 attachment modes 6.4x, with 88 "
-         "free modes added 5.4x).** " + "; ".join(
-             f"{m.upper()}-{k}: {by[(m, k)]['speedup']:.2f}x here against {v}x in the paper"
-             for (m, k), v in PAPER_SPEEDUP.items() if (m, k) in by)
+         "free modes added 5.4x).** "
+         + ("; ".join(compared) if compared else "This campaign has neither CCM-0 nor CCM-88 (first round)")
          + (f"; CB-44: {by[('cb', 44)]['speedup']:.2f}x" if ("cb", 44) in by else "")
-         + f". Our full reference takes {rs['wall_seconds']:.2f} s, not {PAPER_REFERENCE_S:.0f} s. "
-         + ("The speedups fall short of the paper's, for the reasons of the next section."
-            if short else "The speedups reach the paper's."))
+         + f". Our full reference takes {rs['wall_seconds']:.2f} s, not {PAPER_REFERENCE_S:.0f} s."
+         + ("" if not compared else " The speedups fall short of the paper's, for the reasons of the next section."
+            if short else " The speedups reach the paper's."))
 
 L += ["", "## Flops per step and the casing floor" + (": why the speedups fall short" if short else ""), ""]
 full_f = rs["flops_per_step"]
@@ -256,48 +308,85 @@ L.append(f"A contact-free step of the full model does {full_f / 1e3:.1f}k flops 
          "more work than counted, so this rate is a lower bound).")
 if red44:
     s44 = red44["summary"]
+    c44 = min((r for r in every_reduced if r["method"] == "cb" and r["modes"] == 44 and r["selection"] == "lowest"
+               and r["casing"] != "full" and r["rule"] == "case"), key=frontier.casing_modes, default=None)
+    own44 = next((r for r in every_reduced if c44 and r["rule"] == "own"
+                  and frontier.basis_key(r) == frontier.basis_key(c44)), None)
     L.append(f"A CB-44 step (reduced size {s44['dofs']}) does {s44['flops_per_step'] / 1e3:.1f}k flops "
              f"({100 * s44['flops_per_step'] / full_f:.0f} % of a full step) at {gflops(red44):.2f} GFLOP/s. "
-             f"The full casing stays in every reduced run: {s44['casing_flops_per_step'] / 1e3:.1f}k flops a step, "
-             f"{100 * s44['casing_flops_per_step'] / s44['flops_per_step']:.0f} % of the CB-44 step. "
-             f"The full model has {rs['dofs']} dofs and sparse matrices, while the reduced matrices are dense "
+             f"The full casing stays in every first-round run: {s44['casing_flops_per_step'] / 1e3:.1f}k flops a "
+             f"step, {100 * s44['casing_flops_per_step'] / s44['flops_per_step']:.0f} % of the CB-44 step"
+             + (f". Reduced to {frontier.casing_modes(c44)} modes plus the static correction ({c44['name']}) it "
+                f"does {c44['summary']['casing_flops_per_step'] / 1e3:.1f}k flops a step of "
+                f"{c44['summary']['flops_per_step'] / 1e3:.1f}k: "
+                + ("no fewer counted flops than the full sparse casing, though at the case step it runs "
+                   f"{c44['speedup']:.1f}x against CB-44's {red44['speedup']:.1f}x (the count leaves out contact work "
+                   "and bookkeeping)"
+                   + (f"; at its own stable step ({own44['dt']:.3g} s, {own44['name']}) {own44['speedup']:.1f}x "
+                      "(section 'Each reduced system at its own time step'). " if own44 else ". ")
+                   if c44["summary"]["casing_flops_per_step"] >= s44["casing_flops_per_step"] else
+                   "fewer than the full casing (section 'Casing reduction'). ")
+                if c44 else ". ")
+             + f"The full model has {rs['dofs']} dofs and sparse matrices, while the reduced matrices are dense "
              "(r^2 a product), so reduction removes little arithmetic at this size; a reduced model pays on "
              f"larger models. The contact work (the same {n_blades} tips in both) and the per-step bookkeeping "
              "are a second floor. `bench/RESULTS.md` shows the reduced cost flat and the full cost growing with "
              "the model size, and the size at which CB-44 and CCM-44 are 10x faster.")
 
-L += ["", "## Mode-count guidance", ""]
+campaign = frontier.Campaign(out, ref, every_reduced, save)
+L += [""]
+L += frontier.frontier_section(campaign)
+L += frontier.goal_section(campaign)
+L += frontier.steps_section(campaign)
+L += frontier.casing_section(campaign)
+L += frontier.selection_section(campaign)
+
+L += ["## Mode-count guidance", "",
+      "First-round runs (lowest-frequency modes, full casing, the case's step), per method:", ""]
 for target in (0.1, 0.05, 0.01):
     parts = []
     for method in ("cb", "ccm"):
         ok = [r["modes"] for r in reduced if r["method"] == method and r["e2"] <= target]
         parts.append(f"{method.upper()} needs {min(ok)} modes" if ok else
-                     f"no {method.upper()} run of this campaign reaches it (add larger counts)")
+                     f"no {method.upper()} run of this campaign reaches it (add larger counts)" if counts(method) else
+                     f"the campaign has no first-round {method.upper()} run")
     L.append(f"- e2 <= {target}: " + "; ".join(parts) + ".")
-L.append("- `rsi campaign CASE --target-e2 X` prints the same for any X.")
+L.append("- `rsi campaign CASE --target-e2 X` prints, for any X, the smallest mode count of each method reaching "
+         "it over every run of the campaign (all axes).")
+L += frontier.guidance_lines(campaign)
 
 L += ["", "## All runs", "",
-      "| method | modes | e2 | e_inf | wall s | speedup | basis s | flops/step | GFLOP/s | casing share | "
-      "disk critical dt [s] | max penetration [m] | max abs(lambda g) [N m] | energy balance [J] |",
-      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
-for r in rows:
+      "First-round runs first, in the campaign's order, then the second round's. 'modes' is the count asked "
+      "for, 'kept' the basis's (a selection rounds down to whole units); 'critical dt' is 2/omega_max of the "
+      "system integrated, 'disk critical dt' that of its bladed disk alone.", "",
+      "| run | modes | kept | dt [s] | e2 | e_inf | wall s | speedup | basis s | speedup with basis | flops/step | "
+      "GFLOP/s | casing share | critical dt [s] | disk critical dt [s] | max penetration [m] | "
+      "max abs(lambda g) [N m] | energy balance [J] |",
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+for r in rows + [r for r in all_rows if not first_round(r)]:
     s = r["summary"]
     share = f"{100 * s['casing_flops_per_step'] / s['flops_per_step']:.0f} %" if r["method"] != "full" else "-"
-    L.append(f"| {r['method']} | {r['modes']} | {r['e2']:.4f} | {r['e_inf']:.4f} | {r['wall_s']:.3f} | "
-             f"{r['speedup']:.2f} | {s['basis_seconds']:.3f} | {s['flops_per_step'] / 1e3:.1f}k | {gflops(r):.2f} | "
-             f"{share} | {s['bladed_disk_critical_dt']:.3e} | {s['max_penetration']:.1e} | "
+    L.append(f"| {r['name']} | {r['modes']} | {r['modes_kept'] if r['method'] != 'full' else '-'} | {r['dt']:.3g} | "
+             f"{r['e2']:.4f} | {r['e_inf']:.4f} | {r['wall_s']:.3f} | "
+             f"{r['speedup']:.2f} | {s['basis_seconds']:.3f} | {r['speedup_with_basis']:.2f} | "
+             f"{s['flops_per_step'] / 1e3:.1f}k | {gflops(r):.2f} | "
+             f"{share} | {s['critical_dt']:.3e} | {s['bladed_disk_critical_dt']:.3e} | {s['max_penetration']:.1e} | "
              f"{s['max_complementarity']:.1e} | {s['energy_balance_error']:.1e} |")
-L += ["",
-      f"The time step of every run is the case's {rs['dt']:.1e} s. The full system's critical step "
+L += [""]
+if reduced:
+    L += [
+      f"The time step of every first-round run is the case's {rs['dt']:.1e} s. The full system's critical step "
       f"2/omega_max is {rs['critical_dt']:.3e} s"
       + (", set by its bladed disk" if abs(rs["bladed_disk_critical_dt"] - rs["critical_dt"]) <= 1e-12 * rs["critical_dt"]
          else "") + ". "
       f"The reduced bladed disks alone allow steps of "
       f"{min(r['summary']['bladed_disk_critical_dt'] for r in reduced):.2e} s and more (column 'disk critical dt', "
-      "`critical_dt.png`), because reduction removes the highest modes; every reduced run keeps the full casing, "
-      f"and the reduced systems' critical steps are {min(r['summary']['critical_dt'] for r in reduced):.3e}-"
-      f"{max(r['summary']['critical_dt'] for r in reduced):.3e} s.", "",
-      "## Figures", "",
+      "`critical_dt.png`), because reduction removes the highest modes; every first-round run keeps the full casing, "
+      f"and the reduced systems' critical steps are {span([r['summary']['critical_dt'] for r in reduced])}"
+      + (" (set by the casing)." if all(frontier.casing_sets_step(r) for r in reduced) else ".")
+      + (" Second-round runs at their own or a given step: section 'Each reduced system at its own time step'."
+         if any(r["rule"] != "case" for r in every_reduced) else ""), ""]
+L += ["## Figures", "",
       "![Fig. 3 analogue](fig3_nodal_diameters.png)", "",
       "![Figs. 10-13 analogue, CB](gap_cb.png)", "",
       "![Figs. 10-13 analogue, CCM](gap_ccm.png)", "",
@@ -306,6 +395,7 @@ L += ["",
       "![KKT and energy balance](kkt_energy.png)", "",
       "![energy](energy.png)", "",
       "![critical time steps](critical_dt.png)", ""]
+L.append("The second round's figures (`gap_error_*.png`) are in their sections above.")
 with open(f"{out}/.report.md.tmp", "w") as f:
     f.write("\n".join(L))
 os.replace(f"{out}/.report.md.tmp", f"{out}/report.md")
