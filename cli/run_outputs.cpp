@@ -114,6 +114,7 @@ std::string summary_json(const RunSummary& s) {
   j["basis_seconds"] = s.basis_seconds;
   j["casing_basis"] = s.casing_basis;
   j["time_step_rule"] = s.time_step_rule;
+  if (s.step_safety > 0.0) j["step_safety"] = s.step_safety;
   if (!s.selection.empty()) {
     j["selection"] = s.selection;
     j["modes_kept"] = s.modes_kept;

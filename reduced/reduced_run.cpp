@@ -80,6 +80,7 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   s.selection = basis.selection;
   s.modes_kept = basis.n_modes;
   s.time_step_rule = options.step.name();
+  if (options.step.kind == StepRule::Kind::own) s.step_safety = options.step.safety;
   const double omega_bladed_disk =
       modal_disk ? disk_modes.omega_max() : reduced_omega_max(out.basis);
   s.bladed_disk_critical_dt = 2.0 / omega_bladed_disk;

@@ -423,6 +423,11 @@ def pairs_table(c, pairs):
     return L + [""]
 
 
+def safeties(c):
+    values = sorted({r["summary"].get("step_safety") for r in c.runs if rule_kind(r) == "own"} - {None})
+    return ", ".join(f"{v:g}" for v in values) if values else "none"
+
+
 def steps_section(c):
     L = ["## Each reduced system at its own time step", ""]
     k_dev, t_dev = output_time_check(c)
@@ -430,7 +435,7 @@ def steps_section(c):
     L.append(f"Output interval of the reference: {c.interval:.4g} s. A run at its own stable step takes dt = "
              "output interval / k with the smallest integer k for which dt <= s * 2/omega_max of the system it "
              "integrates (the bladed disk's basis and the casing, full or reduced), s the campaign entry's "
-             "`step_safety` (default 0.9; summary.json does not record it); a given step must divide the "
+             f"`step_safety` ({safeties(c)} in this campaign, from summary.json); a given step must divide the "
              "interval too. Every dt divides the output interval, so every run writes its history rows at the "
              "reference's output times and e2 compares them row by row: **no interpolation**. Checked here: "
              f"max |k - round(k)| = {k_dev:.1e} over the {len(c.runs) + 1} runs, and the rows' times differ from the "

@@ -98,6 +98,7 @@ struct RunSummary {
   double basis_seconds = 0.0;           ///< time to build the reduced basis (reduced runs)
   std::string casing_basis = "full";    ///< "full" or casing_basis.hpp's name ("modal-20+s")
   std::string time_step_rule = "case";  ///< StepRule::name(): "case", "own" or the given step
+  double step_safety = 0.0;             ///< of the "own" rule (0 otherwise)
   std::string selection;                ///< mode selection of a reduced run ("" for full)
   int modes_kept = 0;                   ///< the reduced basis's kept modes (0 for full)
   double wall_seconds = 0.0;            ///< whole run: assembly, omega_max, integration
