@@ -58,6 +58,35 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
 
 } // namespace
 
+int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs,
+                             const std::string& where) {
+  // Mode counts against the model before any run (the case loader only
+  // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
+  // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
+  // A given step must divide the output interval: refused before any run.
+  for (const CampaignRun& r : runs)
+    if (r.step.kind == StepRule::Kind::given)
+      run_step(r.step, c.time, 1.0, where + ": time_step of " + r.name());
+  const int casing_dofs = assemble_casing(c).n_dofs();
+  for (const CampaignRun& r : runs)
+    if (r.casing_modes > casing_dofs)
+      throw UsageError(where + ": casing_modes " + std::to_string(r.casing_modes) + " of " +
+                       r.method + "-" + std::to_string(r.modes) + ": must be in [0, " +
+                       std::to_string(casing_dofs) + "] (0: the full casing; its dofs)");
+  const BladedDisk bd = assemble_bladed_disk(c);
+  const int most = bd.n_dofs() - static_cast<int>(bd.boundary.size());
+  for (const CampaignRun& r : runs) {
+    if (r.method == "full") continue;
+    if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
+      throw UsageError(where + ": " + r.method + " with " + std::to_string(r.modes) +
+                       " modes: must be in " +
+                       (r.method == "guyan" ? std::string("[0, 0] for guyan")
+                                            : "[0, " + std::to_string(most) + "] for " +
+                                                  r.method + " (dofs minus boundary dofs)"));
+  }
+  return bd.n_dofs();
+}
+
 int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
@@ -71,33 +100,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const int jobs = options.jobs == 0 ? 2 : options.jobs;
   if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
-  // Mode counts against the model before any run (the case loader only
-  // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
-  // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
-  int disk_dofs = 0;
-  {
-    // A given step must divide the output interval: refused before any run.
-    for (const CampaignRun& r : c.campaign)
-      if (r.step.kind == StepRule::Kind::given)
-        run_step(r.step, c.time, 1.0, c.source + ": key 'campaign': time_step of " + r.name());
-    const int casing_dofs = assemble_casing(c).n_dofs();
-    for (const CampaignRun& r : c.campaign)
-      if (r.casing_modes > casing_dofs)
-        throw UsageError(c.source + ": key 'campaign': casing_modes " +
-                         std::to_string(r.casing_modes) + " of " + r.method + "-" +
-                         std::to_string(r.modes) + ": must be in [0, " +
-                         std::to_string(casing_dofs) + "] (0: the full casing; its dofs)");
-    const BladedDisk bd = assemble_bladed_disk(c);
-    disk_dofs = bd.n_dofs();
-    const int most = disk_dofs - static_cast<int>(bd.boundary.size());
-    for (const CampaignRun& r : c.campaign)
-      if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
-        throw UsageError(c.source + ": key 'campaign': " + r.method + " with " +
-                         std::to_string(r.modes) + " modes: must be in " +
-                         (r.method == "guyan" ? std::string("[0, 0] for guyan")
-                                              : "[0, " + std::to_string(most) + "] for " +
-                                                    r.method + " (dofs minus boundary dofs)"));
-  }
+  const int disk_dofs = check_runs_against_model(c, c.campaign, c.source + ": key 'campaign'");
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.

@@ -91,6 +91,27 @@ struct ModesTable {
 };
 ModesTable modes_table(const Case& c, const std::string& part, int count);
 
+struct SweepOptions {
+  std::string case_path;
+  std::string out = "out/sweep";
+  /// --speeds: "FROM:TO:COUNT" or "W1,W2,..." [rad/s]; empty: the case's sweep.speeds.
+  std::string speeds;
+  /// --method: one run in place of the case's sweep.runs (empty: the case's).
+  std::string method;
+  int modes = 0;
+  std::string selection = "lowest";
+  int casing_modes = 0;
+  std::string time_step = "case";
+  double step_safety = 0.9;
+  int jobs = 0;       ///< threads a process; 0: 2 alone, 1 a rank under mpirun
+  bool quiet = false; ///< no progress lines on stderr
+  bool report = true; ///< run reports/make_sweep_report.py at the end
+};
+
+/// --time-step of simulate and sweep: "case", "own" or a step in seconds
+/// (> 0, finite); UsageError otherwise.
+StepRule parse_step_option(const std::string& text, double safety);
+
 int run_modes(const ModesOptions& options, StagedOutput& output);
 int run_export(const ExportOptions& options, StagedOutput& output);
 int run_calibrate(const CalibrateOptions& options);
@@ -105,5 +126,16 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                          StagedOutput& output);
 
 int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output);
+
+/// Checks a run list against the model before any run: mode counts (cb:
+/// at most the interior dofs, ccm: the dofs minus the boundary's, guyan: 0),
+/// casing modes (at most the casing's dofs) and given steps (dividing the
+/// output interval). UsageError or CaseError prefixed by `where`. Returns
+/// the bladed disk's dofs.
+int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs,
+                             const std::string& where);
+
+/// rsi sweep: the case's runs over its rotation speeds, alone or over MPI ranks.
+int run_sweep(const SweepOptions& options, StagedOutput& output);
 
 } // namespace rsi

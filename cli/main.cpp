@@ -271,6 +271,52 @@ int main(int argc, char** argv) {
                          "skip the report (reports/make_campaign_report.py, python3 + matplotlib)");
   add_component_options(*campaign_cmd, campaign.load);
 
+  rsi::SweepOptions sweep;
+  CLI::App* sweep_cmd = app.add_subcommand(
+      "sweep", "The case's sweep runs over rotation speeds -> DIR/sweep.csv, "
+               "DIR/interaction_lines.csv, DIR/sweep_report.md; under mpirun the speeds are "
+               "shared by the ranks");
+  sweep_cmd->add_option("case", sweep.case_path, "case file (JSON) with a \"sweep\" object")
+      ->required()
+      ->check(case_file());
+  sweep_cmd->add_option("--out", sweep.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  sweep_cmd->add_option("--speeds", sweep.speeds,
+                        "FROM:TO:COUNT or W1,W2,... [rad/s] in place of the case's sweep.speeds");
+  CLI::Option* sweep_method =
+      sweep_cmd
+          ->add_option("--method", sweep.method,
+                       "one run in place of the case's sweep.runs: full, cb, ccm or guyan")
+          ->check(one_of({"full", "cb", "ccm", "guyan"}));
+  CLI::Option* sweep_modes =
+      sweep_cmd->add_option("--modes", sweep.modes, "with --method cb or ccm: modes kept")
+          ->check(integer_in(0, 1000000000, modes_allowed));
+  CLI::Option* sweep_step =
+      sweep_cmd->add_option("--time-step", sweep.time_step,
+                            "with a reduced --method: case, own or a step dividing the output "
+                            "interval");
+  CLI::Option* sweep_safety =
+      sweep_cmd->add_option("--step-safety", sweep.step_safety,
+                            "with --time-step own: the fraction of 2/omega_max, in (0, 1)")
+          ->check(CLI::Range(0.0, 1.0));
+  CLI::Option* sweep_casing =
+      sweep_cmd
+          ->add_option("--casing-modes", sweep.casing_modes,
+                       "with a reduced --method: 0 (the full casing) or N_c casing modes")
+          ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
+  CLI::Option* sweep_selection =
+      sweep_cmd
+          ->add_option("--selection", sweep.selection,
+                       "with a reduced --method: lowest, families, forced or participation")
+          ->check(one_of({"lowest", "families", "forced", "participation"}));
+  sweep_cmd->add_option("--jobs", sweep.jobs,
+                        "threads a process (default 2 alone, 1 a rank under mpirun)")
+      ->check(integer_in(1, 64, "an integer in [1, 64]"));
+  sweep_cmd->add_flag("--quiet", sweep.quiet, "no progress lines on stderr");
+  sweep_cmd->add_flag("!--no-report", sweep.report,
+                      "skip the report (reports/make_sweep_report.py, python3 + matplotlib)");
+
   rsi::ModalCampaignOptions modal_campaign;
   CLI::App* modal_campaign_cmd = app.add_subcommand(
       "modal-campaign",
@@ -303,7 +349,7 @@ int main(int argc, char** argv) {
 
   if (app.get_subcommands().empty()) {
     std::fprintf(stderr, "rsi: error: a subcommand is required: modes, export, calibrate, "
-                         "reduce, simulate, campaign or modal-campaign (see rsi --help)\n");
+                         "reduce, simulate, campaign, modal-campaign or sweep (see rsi --help)\n");
     return 2;
   }
   // Everything a command writes goes to a staging folder, published as one
@@ -337,6 +383,24 @@ int main(int argc, char** argv) {
     if (*reduce_cmd) return rsi::run_reduce(reduce, output);
     if (*campaign_cmd) return rsi::run_campaign(campaign, output);
     if (*modal_campaign_cmd) return rsi::run_modal_campaign(modal_campaign, output);
+    if (*sweep_cmd) {
+      // The run options describe the one --method run: refused without it.
+      for (const CLI::Option* o :
+           {sweep_modes, sweep_step, sweep_safety, sweep_casing, sweep_selection}) {
+        if (o->count() > 0 && sweep.method.empty())
+          throw rsi::UsageError(o->get_name() +
+                                ": only with --method (it describes that one run); add "
+                                "--method or drop it");
+        if (o->count() > 0 && sweep.method == "full")
+          throw rsi::UsageError(o->get_name() +
+                                ": only for a reduced --method (the full reference runs the whole "
+                                "model at time.step); drop it");
+      }
+      if (sweep_safety->count() > 0 && sweep.time_step != "own")
+        throw rsi::UsageError("--step-safety: only with --time-step own; drop it");
+      (void)sweep_method;
+      return rsi::run_sweep(sweep, output);
+    }
     return 1;
   };
   auto run = [&]() -> int {

@@ -31,6 +31,12 @@ OutputSet campaign_output_set() {
           "error_vs_cost.png", "report.md"};
 }
 
+OutputSet sweep_output_set() {
+  return {"sweep.csv", "interaction_lines.csv", "sweep_summary.json",
+          // reports/make_sweep_report.py
+          "sweep_map.png", "sweep_campbell.png", "sweep_report.md"};
+}
+
 OutputSet modal_campaign_output_set() {
   return {"modal_convergence.csv", "modal_errors.csv",   "modal_convergence.png",
           "modal_errors.png",      "modal_summary.json", "modal_report.md"};

@@ -28,5 +28,6 @@ OutputSet simulate_output_set();
 /// the figures of either report script.
 OutputSet campaign_output_set();
 OutputSet modal_campaign_output_set();
+OutputSet sweep_output_set();
 
 } // namespace rsi

@@ -11,18 +11,22 @@
 namespace rsi {
 namespace {
 
+void append(std::string& out, double x) {
+  append_csv_number(out, x);
+}
+
+} // namespace
+
 // std::to_chars with chars_format::general and precision 17 is specified
 // as printf's "%.17g" (C++17 [charconv.to.chars]): the same bytes, without
 // printf's locale and format parsing (a history row is 49 numbers; at
 // output_every 1 snprintf was a third of a reduced run's step).
-void append(std::string& out, double x) {
+void append_csv_number(std::string& out, double x) {
   char buffer[32];
   const std::to_chars_result r =
       std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 17);
   out.append(buffer, r.ptr);
 }
-
-} // namespace
 
 std::string history_csv_header(int n_blades, int n_tangents) {
   if (n_tangents < 0 || n_tangents > 2)

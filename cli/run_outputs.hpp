@@ -30,6 +30,9 @@ int history_csv_tangents(const HistoryRow& row);
 /// Appends one line of history.csv (17 significant digits, newline) to `out`.
 void append_history_csv_row(std::string& out, const HistoryRow& row);
 
+/// Appends x with 17 significant digits (the bytes of printf's "%.17g").
+void append_csv_number(std::string& out, double x);
+
 /// node,theta,u,v: the casing at one instant (node j at theta = 2 pi j / n).
 std::string casing_snapshot_csv(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
 

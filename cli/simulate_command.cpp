@@ -34,7 +34,19 @@ std::string field_csv_header(Eigen::Index n_dofs) {
   return out;
 }
 
-/// --time-step: "case", "own" or a step in seconds (> 0, finite).
+void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", t);
+  out += buffer;
+  for (Eigen::Index i = 0; i < u.size(); ++i) {
+    std::snprintf(buffer, sizeof buffer, ",%.17g", u(i));
+    out += buffer;
+  }
+  out += "\n";
+}
+
+} // namespace
+
 StepRule parse_step_option(const std::string& text, double safety) {
   StepRule rule;
   rule.safety = safety;
@@ -54,18 +66,6 @@ StepRule parse_step_option(const std::string& text, double safety) {
   return rule;
 }
 
-void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", t);
-  out += buffer;
-  for (Eigen::Index i = 0; i < u.size(); ++i) {
-    std::snprintf(buffer, sizeof buffer, ",%.17g", u(i));
-    out += buffer;
-  }
-  out += "\n";
-}
-
-} // namespace
 
 int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   const nlohmann::json document = read_case_document(options.case_path);

@@ -38,6 +38,16 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                   std::to_string(r) + " finite entries >= 0");
     m_q_damped = (damping.bladed_disk.array() != 0.0).any();
   }
+  if (damping.bladed_disk_matrix.size() != 0) {
+    if (damping.bladed_disk.size() != 0 || damping.bladed_disk_matrix.rows() != r ||
+        damping.bladed_disk_matrix.cols() != r || !damping.bladed_disk_matrix.allFinite())
+      throw std::invalid_argument("ReducedIntegrator: a full bladed-disk damping must be " +
+                                  std::to_string(r) + " x " + std::to_string(r) +
+                                  ", finite, and given without the diagonal one");
+    m_cq_matrix = damping.bladed_disk_matrix;
+    m_q_damped = (m_cq_matrix.array() != 0.0).any();
+    if (!m_q_damped) m_cq_matrix.resize(0, 0);
+  }
   if (!finite_non_negative(m_casing_damping.alpha) || !finite_non_negative(m_casing_damping.beta))
     throw std::invalid_argument(
         "ReducedIntegrator: the casing's Rayleigh alpha and beta must be finite and >= 0");
@@ -45,7 +55,9 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
 
   // A = M^ + dt/2 C^ (M^ undamped), factorized once.
   Eigen::MatrixXd a_q = m_mq;
-  if (m_q_damped) {
+  if (m_q_damped && m_cq_matrix.size() != 0) {
+    a_q += 0.5 * dt * m_cq_matrix;
+  } else if (m_q_damped) {
     m_cq = damping.bladed_disk;
     a_q.diagonal() += 0.5 * dt * m_cq;
   }
@@ -55,9 +67,12 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                   (m_q_damped ? " plus dt/2 C^" : "") +
                                   " is not positive definite");
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
+  m_tip_position = basis.boundary_position;
   const bool modal = disk_modes != nullptr && !m_q_damped;
   if (!modal) m_aq = mq_factor.solve(m_kq); // the physical predictor's M^-1 K^ only
-  if (m_q_damped) m_bq = dt * (m_mq_inverse * m_cq.asDiagonal());
+  if (m_q_damped)
+    m_bq = m_cq_matrix.size() != 0 ? Eigen::MatrixXd(dt * (m_mq_inverse * m_cq_matrix))
+                                   : Eigen::MatrixXd(dt * (m_mq_inverse * m_cq.asDiagonal()));
   if (modal) {
     if (disk_modes->shapes.rows() != r || disk_modes->shapes.cols() != r ||
         disk_modes->omega_squared.size() != r)
@@ -141,6 +156,7 @@ double ReducedIntegrator::flops_per_step() const {
                                    : 2.0 * r * r + 4.0 * r;
   double flops = disk + 64.0 * m_contact.n_tips() + casing_flops_per_step();
   if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
+  if (m_cq_matrix.size() != 0) flops += 2.0 * r * r; // C^ dq of W_damp
   return flops;
 }
 
@@ -153,6 +169,13 @@ double ReducedIntegrator::energy() const {
            0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta)) + casing;
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + casing;
+}
+
+void ReducedIntegrator::tip_displacement(Eigen::VectorXd& out) const {
+  // On the modal path q_n's boundary entries are kept (form_boundary).
+  out.resize(static_cast<Eigen::Index>(m_tip_position.size()));
+  for (size_t i = 0; i < m_tip_position.size(); ++i)
+    out(static_cast<Eigen::Index>(i)) = m_q(m_tip_position[i]);
 }
 
 Eigen::VectorXd ReducedIntegrator::q() const {
@@ -541,7 +564,12 @@ double ReducedIntegrator::step_damping_work() {
   double work = 0.0;
   if (m_q_damped) {
     m_dq = m_q_next - m_q_prev;
-    work += m_dq.dot(m_cq.cwiseProduct(m_dq));
+    if (m_cq_matrix.size() != 0) {
+      m_cq_dq.noalias() = m_cq_matrix * m_dq;
+      work += m_dq.dot(m_cq_dq);
+    } else {
+      work += m_dq.dot(m_cq.cwiseProduct(m_dq));
+    }
   }
   if (m_c_damped) {
     m_c_delta = m_c_next - m_c_prev;

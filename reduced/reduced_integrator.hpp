@@ -133,6 +133,9 @@ public:
 /// The damping of a reduced run: empty or zero = undamped.
 struct ReducedDamping {
   Eigen::VectorXd bladed_disk; ///< diag(C^), r entries >= 0 (modal_damping), or empty
+  /// A full C^ (r x r, symmetric, >= 0) in place of the diagonal: the
+  /// projected Rayleigh damping alpha M^ + beta K^ (case_file.hpp); or empty.
+  Eigen::MatrixXd bladed_disk_matrix;
   RayleighDamping casing;      ///< alpha, beta >= 0 of the full casing
 };
 
@@ -166,6 +169,10 @@ public:
   double time() const { return m_n * m_dt; }
   /// The reduced coordinates q_n (formed from eta on the modal path).
   Eigen::VectorXd q() const;
+  /// The boundary (tip) entries of q_n, (u_1, v_1, u_2, v_2, ...) in the
+  /// tip polar frame [m]: the physical tip displacements (the boundary is
+  /// kept physical by every reduction).
+  void tip_displacement(Eigen::VectorXd& out) const;
   /// Whether the disk runs in modal coordinates (undamped and asked for).
   bool modal_bladed_disk() const { return m_modal_disk; }
   const Eigen::VectorXd& casing() const { return m_c; }
@@ -248,7 +255,9 @@ private:
   Eigen::MatrixXd m_mq;
   Eigen::MatrixXd m_mq_inverse; ///< A^-1 = (M^ + dt/2 C^)^-1 (M^-1 undamped)
   Eigen::MatrixXd m_aq;         ///< A^-1 K^
-  Eigen::VectorXd m_cq;         ///< diag(C^) (empty undamped)
+  Eigen::VectorXd m_cq;         ///< diag(C^) (empty undamped or with a full C^)
+  Eigen::MatrixXd m_cq_matrix;  ///< a full C^ (empty unless given)
+  Eigen::VectorXd m_cq_dq;      ///< C^ (q_{n+1} - q_{n-1}), for W_damp with a full C^
   Eigen::MatrixXd m_bq;         ///< dt A^-1 C^ (damped only)
   RayleighDamping m_casing_damping;
   bool m_q_damped = false;
@@ -264,7 +273,8 @@ private:
   bool m_modal_disk = false;
   Eigen::MatrixXd m_psi;          ///< Psi, r x r, M^-orthonormal
   Eigen::VectorXd m_lambda_disk;  ///< Lambda = diag(Psi^T K^ Psi)
-  std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q
+  std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q (modal disk)
+  std::vector<int> m_tip_position; ///< positions of the boundary (tip) entries in q
   Eigen::MatrixXd m_psi_boundary; ///< Psi_B: the rows of Psi at m_boundary
   Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary;
   // Modal casing (casing_basis): c = Phi p.

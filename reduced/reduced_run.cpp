@@ -25,13 +25,15 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
     const double dt = options.step.kind == StepRule::Kind::given ? options.step.step : c.time.step;
     check_time_step_bound(dt, casing.stiffness, casing.mass, options.run.force, "casing");
   }
+  return run_reduced(c, build_reduced_basis(c, method, modes, options.selection), options);
+}
+
+ReducedBasis build_reduced_basis(const Case& c, const std::string& method, int modes,
+                                 const std::string& selection) {
   const BladedDisk bd = assemble_bladed_disk(c);
-  if (options.selection == "lowest")
-    return run_reduced(c, reduce_bladed_disk(bd, method, modes), options);
-  return run_reduced(c,
-                     reduce_bladed_disk(bd, method, modes, parse_mode_selection(options.selection),
-                                        selection_context(bd, c.forcing.nodal_diameter)),
-                     options);
+  if (selection == "lowest") return reduce_bladed_disk(bd, method, modes);
+  return reduce_bladed_disk(bd, method, modes, parse_mode_selection(selection),
+                            selection_context(bd, c.forcing.nodal_diameter));
 }
 
 ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
@@ -57,7 +59,7 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   // The reduced bladed disk's modes, for the integrator's modal coordinates
   // (undamped runs; reduced_integrator.hpp): built once with the basis, a
   // property of the reduced model that serves every run made with it.
-  const bool modal_disk = case_in.damping.modal_ratio == 0.0;
+  const bool modal_disk = case_in.damping.modal_ratio == 0.0 && !case_in.damping.projected_rayleigh;
   ReducedModes disk_modes;
   double disk_modes_seconds = 0.0;
   if (modal_disk) {
@@ -97,7 +99,11 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   // damping the stable step is 2/omega_max for any C >= 0 (reduced_integrator.hpp):
   // the check above stands.
   ReducedDamping damping;
-  damping.bladed_disk = modal_damping(out.basis, c.damping.modal_ratio);
+  if (c.damping.projected_rayleigh) // T^T (alpha M + beta K) T, T constant
+    damping.bladed_disk_matrix =
+        c.damping.rayleigh.alpha * out.basis.mass + c.damping.rayleigh.beta * out.basis.stiffness;
+  else
+    damping.bladed_disk = modal_damping(out.basis, c.damping.modal_ratio);
   damping.casing = c.damping.rayleigh;
   ReducedIntegrator integrator(out.basis, casing, c.time.step, contact, damping,
                                modal_casing ? &out.casing_basis : nullptr,
@@ -112,6 +118,9 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   RunMonitor monitor(c, casing, options.run, result);
   std::vector<Eigen::VectorXd> field;
   const bool coulomb = c.operating_point.friction_law == FrictionLaw::coulomb;
+  const TipDisplacementSource tips = [&](Eigen::VectorXd& out) {
+    integrator.tip_displacement(out);
+  };
   auto state = [&]() {
     // The tangential multipliers (one a tip) go to history.csv with the
     // Coulomb law only, as in the reference run: sliding_sign histories keep
@@ -124,7 +133,8 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
                      integrator.contact_work(),
                      integrator.casing(),
                      integrator.damping_work(),
-                     coulomb ? &integrator.tangential_lambda() : nullptr};
+                     coulomb ? &integrator.tangential_lambda() : nullptr,
+                     &tips};
   };
   Eigen::VectorXd u(bd.n_dofs());
   auto record_field = [&]() {

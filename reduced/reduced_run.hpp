@@ -57,6 +57,12 @@ struct ReducedRunResult {
 ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
                              const ReducedRunOptions& options);
 
+/// The bladed-disk basis run_reduced builds for (method, modes, selection):
+/// one basis serves every run of a sweep (the rotation enters only through
+/// contact). Throws ReductionError.
+ReducedBasis build_reduced_basis(const Case& c, const std::string& method, int modes,
+                                 const std::string& selection);
+
 /// The same with a basis built (or altered) by the caller.
 ReducedRunResult run_reduced(const Case& c, const ReducedBasis& basis,
                              const ReducedRunOptions& options);

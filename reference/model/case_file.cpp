@@ -180,6 +180,115 @@ void check_run_size(const Case& c, const case_json::ObjectReader& time) {
   }
 }
 
+/// The entries of a run list ("campaign", "sweep.runs"): {"method",
+/// "modes": [..]} with the optional axes, expanded to every (modes,
+/// casing_modes, time_step) in that order; with `allow_full`, also
+/// {"method": "full"} (no other key: the reference model has no axes).
+std::vector<CampaignRun> read_run_entries(const ObjectReader& parent, const json& list,
+                                          const std::string& key, bool allow_full) {
+  if (!list.is_array())
+    parent.fail(parent.full(key), "must be an array of {\"method\", \"modes\"} objects");
+  std::vector<CampaignRun> runs;
+  for (size_t i = 0; i < list.size(); ++i) {
+    ObjectReader entry(list[i], parent.full(key) + "[" + std::to_string(i) + "]",
+                       parent.source());
+    entry.claim("method");
+    const json& method = list[i].contains("method") ? list[i].at("method") : json();
+    if (allow_full && method == "full") {
+      CampaignRun full;
+      full.method = "full";
+      runs.push_back(full);
+      entry.finish();
+      continue;
+    }
+    if (!method.is_string() || (method != "cb" && method != "ccm" && method != "guyan"))
+      entry.fail(entry.full("method"), std::string("must be ") +
+                                           (allow_full ? "\"full\", " : "") +
+                                           "\"cb\", \"ccm\" or \"guyan\", got " + method.dump());
+    entry.claim("modes");
+    const json& modes = list[i].contains("modes") ? list[i].at("modes") : json();
+    if (!modes.is_array() || modes.empty())
+      entry.fail(entry.full("modes"), "must be a non-empty array of mode counts, got " + modes.dump());
+    for (const json& m : modes)
+      if (!m.is_number_integer() || m.get<long>() < 0 || m.get<long>() > 100000)
+        entry.fail(entry.full("modes"), "must hold integers in [0, 100000], got " + m.dump());
+    const CampaignAxes axes = read_campaign_axes(entry, list[i]);
+    for (const json& m : modes)
+      for (const int casing_modes : axes.casing_modes)
+        for (const StepRule& step : axes.steps)
+          runs.push_back(
+              {method.get<std::string>(), m.get<int>(), axes.selection, casing_modes, step});
+    entry.finish();
+  }
+  return runs;
+}
+
+/// The rotation speeds of a sweep: a list [Omega, ...] or a range {"from",
+/// "to", "count"} (count equally spaced speeds, both ends included).
+std::vector<double> read_speeds(ObjectReader& sweep, const json& value) {
+  const Range speed{0.0, 1e5, false, false, "rad/s"};
+  constexpr long max_speeds = 100000;
+  std::vector<double> speeds;
+  if (value.is_array()) {
+    if (value.empty() || static_cast<long>(value.size()) > max_speeds)
+      sweep.fail(sweep.full("speeds"), "must hold 1 to " + std::to_string(max_speeds) +
+                                           " rotation speeds, got " + std::to_string(value.size()));
+    for (const json& v : value) {
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || !speed.contains(v.get<double>()))
+        sweep.fail(sweep.full("speeds"), "must hold numbers in " + speed.text() + ", got " + v.dump());
+      speeds.push_back(v.get<double>());
+    }
+    return speeds;
+  }
+  ObjectReader range = sweep.object("speeds");
+  const double from = range.number("from", speed);
+  const double to = range.number("to", speed);
+  const int count = range.integer("count", 1, max_speeds);
+  range.finish();
+  if (count > 1 && !(to > from))
+    range.fail(range.full("to"), "must be above from = " + std::to_string(from) +
+                                     " rad/s when count > 1");
+  for (int i = 0; i < count; ++i)
+    speeds.push_back(count == 1 ? from : from + (to - from) * i / (count - 1));
+  return speeds;
+}
+
+/// The optional "sweep" object (issue 15), checked against the case's time
+/// stepping: each run must be countable and leave at least 16 history rows
+/// after the transient for its spectrum.
+SweepSpec read_sweep(ObjectReader& top, const json& value, const Case& c) {
+  SweepSpec out;
+  ObjectReader sweep = top.object("sweep");
+  sweep.optional_note("note");
+  sweep.claim("speeds");
+  if (!value.contains("speeds"))
+    sweep.fail(sweep.full("speeds"), "missing: a list of speeds or {\"from\", \"to\", \"count\"}");
+  out.speeds = read_speeds(sweep, value.at("speeds"));
+  out.duration = sweep.number("duration", positive("s"));
+  out.transient = sweep.number("transient", {0.0, out.duration, false, true, "s (below duration)"});
+  constexpr double max_steps = std::numeric_limits<int>::max();
+  const double steps = std::round(out.duration / c.time.step);
+  if (!(steps <= max_steps))
+    sweep.fail(sweep.full("duration"), "over time.step gives more than " +
+                                           std::to_string(static_cast<long long>(max_steps)) +
+                                           " steps: shorten it");
+  constexpr int min_rows = 16;
+  const double interval = c.time.step * c.time.output_every;
+  const double rows = std::floor((out.duration - out.transient) / interval + 1e-9);
+  if (rows < min_rows)
+    sweep.fail(sweep.full("transient"),
+               "leaves " + std::to_string(static_cast<long long>(rows)) +
+                   " history rows before duration (output interval " + std::to_string(interval) +
+                   " s); the spectrum needs at least " + std::to_string(min_rows));
+  out.damping = read_damping(sweep, value);
+  sweep.claim("runs");
+  if (!value.contains("runs")) sweep.fail(sweep.full("runs"), "missing: the runs of every speed");
+  out.runs = read_run_entries(sweep, value.at("runs"), "runs", true);
+  if (out.runs.empty()) sweep.fail(sweep.full("runs"), "must name at least one run");
+  sweep.finish();
+  return out;
+}
+
 Case parse_case(const json& document, const std::string& source) {
   ObjectReader top(document, "", source);
   Case c;
@@ -229,41 +338,17 @@ Case parse_case(const json& document, const std::string& source) {
 
   // Optional: "campaign": [{"method": "cb", "modes": [0, 10]}, ...].
   top.claim("campaign");
-  if (document.contains("campaign")) {
-    const json& list = document.at("campaign");
-    if (!list.is_array())
-      top.fail("campaign", "must be an array of {\"method\", \"modes\"} objects");
-    for (size_t i = 0; i < list.size(); ++i) {
-      const std::string path = "campaign[" + std::to_string(i) + "]";
-      ObjectReader entry(list[i], path, source);
-      entry.claim("method");
-      entry.claim("modes");
-      const json& method = list[i].contains("method") ? list[i].at("method") : json();
-      if (!method.is_string() || (method != "cb" && method != "ccm" && method != "guyan"))
-        entry.fail(entry.full("method"),
-                   "must be \"cb\", \"ccm\" or \"guyan\", got " + method.dump());
-      const json& modes = list[i].contains("modes") ? list[i].at("modes") : json();
-      if (!modes.is_array() || modes.empty())
-        entry.fail(entry.full("modes"),
-                   "must be a non-empty array of mode counts, got " + modes.dump());
-      for (const json& m : modes)
-        if (!m.is_number_integer() || m.get<long>() < 0 || m.get<long>() > 100000)
-          entry.fail(entry.full("modes"), "must hold integers in [0, 100000], got " + m.dump());
-      const CampaignAxes axes = read_campaign_axes(entry, list[i]);
-      // Every (modes, casing_modes, time_step) of the entry, in that order.
-      for (const json& m : modes)
-        for (const int casing_modes : axes.casing_modes)
-          for (const StepRule& step : axes.steps)
-            c.campaign.push_back(
-                {method.get<std::string>(), m.get<int>(), axes.selection, casing_modes, step});
-      entry.finish();
-    }
-  }
+  if (document.contains("campaign"))
+    c.campaign = read_run_entries(top, document.at("campaign"), "campaign", false);
+
+  top.claim("sweep");
+  if (document.contains("sweep")) c.sweep = read_sweep(top, document.at("sweep"), c);
   top.finish();
   return c;
 }
 
 std::string CampaignRun::name() const {
+  if (method == "full") return "full";
   std::string out = method + "-" + std::to_string(modes);
   if (selection != "lowest") out += "-" + selection;
   if (casing_modes > 0) out += "-c" + std::to_string(casing_modes);

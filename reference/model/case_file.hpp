@@ -101,6 +101,12 @@ struct Damping {
   /// zeta of every kept mode of a reduced bladed disk (fixed-interface for
   /// CB, free-interface for CCM), none on its boundary coordinates; in [0, 1).
   double modal_ratio = 0.0;
+  /// Reduced runs of the paper's case: the bladed disk gets
+  /// C^ = T^T (alpha M + beta K) T = alpha M^ + beta K^, the Galerkin
+  /// projection of the full model's Rayleigh damping, in place of modal
+  /// ratios: full and reduced runs then carry the same damping, and their
+  /// difference is the reduction's alone. Exclusive with modal_ratio.
+  bool projected_rayleigh = false;
 };
 
 /// The time step of a run (issue 14). Every rule gives dt = I / k, I =
@@ -123,7 +129,7 @@ struct StepRule {
 /// One reduced run of the campaign (SPEC §4 V6): a method and a mode count,
 /// with the axes of issue 14 (mode selection, casing basis, time step).
 struct CampaignRun {
-  std::string method; ///< "cb", "ccm" or "guyan"
+  std::string method; ///< "cb", "ccm" or "guyan" ("full" in a sweep's runs)
   int modes = 0;
   std::string selection = "lowest"; ///< mode_selection.hpp; "lowest" is the first round's
   int casing_modes = 0;             ///< 0: the full casing; N_c: casing_basis.hpp
@@ -131,8 +137,23 @@ struct CampaignRun {
   /// "cb-64" for the first round's runs; the issue-14 axes append
   /// "-<selection>" (not lowest), "-c<N_c>" (modal casing) and "-dt-own" or
   /// "-dt-<step>" (not the case's step): "cb-64-families-c20-dt-own". The
-  /// campaign's runs/ directory and the thresholds' key.
+  /// campaign's runs/ directory and the thresholds' key. "full" for the
+  /// full model.
   std::string name() const;
+};
+
+/// The optional "sweep" object (issue 15): the runs of `rsi sweep` over
+/// rotation speeds. Each run is the case at one Omega, over `duration`, with
+/// `damping` in place of the case's; its indicators are taken over the
+/// history rows at t >= transient.
+struct SweepSpec {
+  std::vector<double> speeds; ///< Omega [rad/s], in the order given (a range: ascending)
+  double duration = 0.0;      ///< each run's simulated time [s]
+  double transient = 0.0;     ///< the indicators read t >= transient [s]
+  Damping damping;            ///< replaces the case's damping in the sweep's runs
+  /// "full" (method "full") and reduced runs, as campaign entries.
+  std::vector<CampaignRun> runs;
+  bool present() const { return !speeds.empty(); }
 };
 
 struct Case {
@@ -145,6 +166,7 @@ struct Case {
   TimeStepping time;
   Damping damping;
   std::vector<CampaignRun> campaign; ///< empty when the file has no campaign
+  SweepSpec sweep;                   ///< empty (no speeds) when the file has no sweep
 };
 
 /// Validates `document` against the schema of data/README.md.

@@ -148,6 +148,20 @@ inline Damping read_damping(ObjectReader& top, const json& document) {
   damping.claim("modal_ratio");
   if (document.at("damping").contains("modal_ratio"))
     out.modal_ratio = damping.number("modal_ratio", {0.0, 1.0, false, true, ""});
+  damping.claim("projected_rayleigh");
+  if (document.at("damping").contains("projected_rayleigh")) {
+    const json& value = document.at("damping").at("projected_rayleigh");
+    if (!value.is_boolean())
+      damping.fail(damping.full("projected_rayleigh"), "must be true or false, got " + value.dump());
+    out.projected_rayleigh = value.get<bool>();
+    if (out.projected_rayleigh && out.modal_ratio != 0.0)
+      damping.fail(damping.full("projected_rayleigh"),
+                   "true gives the reduced bladed disk the projected Rayleigh damping; "
+                   "modal_ratio would be a second one: drop one of them");
+    if (out.projected_rayleigh && !out.rayleigh.any())
+      damping.fail(damping.full("projected_rayleigh"),
+                   "true projects damping.rayleigh, which is absent or zero: add it");
+  }
   damping.finish();
   return out;
 }

@@ -322,6 +322,10 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   top.claim("rubbing");
   if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
   c.damping = read_damping(top, document);
+  if (c.damping.projected_rayleigh)
+    top.fail("damping.projected_rayleigh",
+             "only for the paper's case (its reduced integrator); a component's reduced runs "
+             "take damping.modal_ratio");
   top.finish();
   return c;
 }

@@ -49,6 +49,11 @@ struct HistoryRow {
   /// (t1 [, t2]; d = 1 in 2D, 2 in 3D) [N]; nullptr for the sliding_sign law
   /// (history.csv then has no lambda_t columns).
   const Eigen::VectorXd* lambda_tangential = nullptr;
+  /// When the run was asked for them (RunOptions::tip_displacement): the
+  /// blade tips' displacements at u_n in the tip polar frame, (u_1, v_1,
+  /// u_2, v_2, ...) radial outward and tangential counter-clockwise [m];
+  /// nullptr otherwise. Not written to history.csv (rsi sweep reads them).
+  const Eigen::VectorXd* tip_displacement = nullptr;
 };
 
 /// Receives each history row as it is produced, in order (streamed output).

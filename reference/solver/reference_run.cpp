@@ -61,6 +61,13 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
   // The casing displacement is gathered from the integrator's permuted state
   // only when the monitor reads it (the first contact).
   const Eigen::VectorXd not_needed;
+  // The bladed-disk dofs come first in u, the tips' (u, v) at bd.boundary.
+  const TipDisplacementSource tips = [&](Eigen::VectorXd& out) {
+    const Eigen::VectorXd& u = cd.displacement();
+    out.resize(static_cast<Eigen::Index>(bd.boundary.size()));
+    for (size_t i = 0; i < bd.boundary.size(); ++i)
+      out(static_cast<Eigen::Index>(i)) = u(bd.boundary[i]);
+  };
   auto state = [&](bool with_casing) {
     return StepState{
         cd.step_index(),
@@ -72,7 +79,8 @@ RunResult run_reference(const Case& c, const RunOptions& options) {
         with_casing ? Eigen::Ref<const Eigen::VectorXd>(cd.displacement().tail(casing.n_dofs()))
                     : Eigen::Ref<const Eigen::VectorXd>(not_needed),
         cd.damping_work(),
-        coulomb ? &cd.lambda_tangential() : nullptr};
+        coulomb ? &cd.lambda_tangential() : nullptr,
+        &tips};
   };
   const Clock::time_point integration_start = Clock::now();
   bool forced = forcing_active(c.forcing, 0.0, s.dt);

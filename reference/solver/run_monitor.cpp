@@ -55,9 +55,12 @@ RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& op
 }
 
 void RunMonitor::add_row(const StepState& state, double energy) {
+  const bool tips = m_options.tip_displacement && state.tips != nullptr;
+  if (tips) (*state.tips)(m_tips);
   const HistoryRow row{state.time,          state.gap,          state.lambda,
                        energy,              state.external_work, state.contact_work,
-                       state.damping_work,  state.lambda_tangential};
+                       state.damping_work,  state.lambda_tangential,
+                       tips ? &m_tips : nullptr};
   if (m_options.history_sink)
     m_options.history_sink(row);
   else

@@ -46,7 +46,14 @@ struct RunOptions {
   /// not grow with its length); when empty, the rows are kept in
   /// RunResult::history.
   HistorySink history_sink;
+  /// Hand every history row the blade tips' displacements
+  /// (HistoryRow::tip_displacement); gathered on output steps only.
+  bool tip_displacement = false;
 };
+
+/// Writes the blade tips' displacements (u_1, v_1, u_2, v_2, ...) at the
+/// current step into its argument (sized by the caller's first call).
+using TipDisplacementSource = std::function<void(Eigen::VectorXd&)>;
 
 struct RunResult {
   History history; ///< every row, unless RunOptions::history_sink took them
@@ -73,6 +80,9 @@ struct StepState {
   /// Coulomb law only: lambda_t of the step, d per contact (t1 [, t2]) [N];
   /// nullptr otherwise (then the history rows carry none).
   const Eigen::VectorXd* lambda_tangential = nullptr;
+  /// Read on output steps when RunOptions::tip_displacement is set; may be
+  /// nullptr otherwise.
+  const TipDisplacementSource* tips = nullptr;
 };
 
 /// Throws StabilityError unless dt < 2 / omega_max or forced; fills the
@@ -124,6 +134,7 @@ private:
   double m_last_external_work = 0.0; ///< of the last row
   double m_last_contact_work = 0.0;  ///< of the last row
   double m_last_damping_work = 0.0;  ///< of the last row
+  Eigen::VectorXd m_tips;            ///< tip displacements of the row being added
 };
 
 } // namespace rsi
