@@ -22,19 +22,21 @@ struct WorkspaceDeleter {
 
 } // namespace
 
-std::vector<double> hann_amplitude_spectrum(const std::vector<double>& x) {
-  const size_t n = x.size();
-  if (n < 4)
-    throw std::invalid_argument("hann_amplitude_spectrum: needs at least 4 samples, got " +
-                                std::to_string(n));
+std::vector<double> hann_amplitude_spectrum(const std::vector<double>& x, int padding) {
+  const size_t samples = x.size();
+  if (samples < 4 || padding < 1)
+    throw std::invalid_argument("hann_amplitude_spectrum: needs at least 4 samples and padding "
+                                ">= 1, got " + std::to_string(samples) + " and " +
+                                std::to_string(padding));
+  const size_t n = samples * static_cast<size_t>(padding);
   for (double v : x)
     if (!std::isfinite(v))
       throw std::invalid_argument("hann_amplitude_spectrum: a sample is not finite");
-  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
-  std::vector<double> data(n);
+  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(samples);
+  std::vector<double> data(n, 0.0); // zeros past the samples: the padding
   double window_sum = 0.0;
-  for (size_t i = 0; i < n; ++i) {
-    const double w = 0.5 * (1.0 - std::cos(2.0 * M_PI * static_cast<double>(i) / n));
+  for (size_t i = 0; i < samples; ++i) {
+    const double w = 0.5 * (1.0 - std::cos(2.0 * M_PI * static_cast<double>(i) / samples));
     window_sum += w;
     data[i] = w * (x[i] - mean);
   }
@@ -64,7 +66,7 @@ std::vector<SpectralPeak> dominant_frequencies(const std::vector<double>& x, dou
   if (!(dt > 0.0) || count < 0)
     throw std::invalid_argument("dominant_frequencies: dt must be > 0 and count >= 0");
   const std::vector<double> a = hann_amplitude_spectrum(x);
-  const double resolution = 1.0 / (static_cast<double>(x.size()) * dt);
+  const double resolution = 1.0 / (static_cast<double>(x.size()) * spectrum_padding * dt);
   std::vector<SpectralPeak> peaks;
   for (size_t k = 1; k + 1 < a.size(); ++k)
     if (a[k] > a[k - 1] && a[k] >= a[k + 1]) peaks.push_back({k * resolution, a[k]});
