@@ -57,6 +57,11 @@ struct TaskResult {
   std::string error; ///< empty unless the run failed
 };
 
+/// The run's name in sweep.csv: "full", or the campaign's "cb-44-dt-own".
+std::string run_name(const CampaignRun& run) {
+  return run.method == "full" ? "full" : run.name();
+}
+
 /// --speeds "FROM:TO:COUNT" or "W1,W2,...".
 std::vector<double> parse_speeds_option(const std::string& text) {
   const auto number = [&](const std::string& s) {
@@ -115,7 +120,7 @@ std::string csv_row(double speed, const CampaignRun& run, const std::string& sta
                     const SweepIndicators* ind) {
   std::string row;
   append_csv_number(row, speed);
-  row += "," + run.name() + "," + run.method + "," + std::to_string(run.modes) + "," + status +
+  row += "," + run_name(run) + "," + run.method + "," + std::to_string(run.modes) + "," + status +
          "," + (status == "diverged" ? "1" : "0") + ",";
   if (ind == nullptr) return row + ",,,,,,,,,,,\n";
   row += std::to_string(ind->rows);
@@ -156,7 +161,7 @@ TaskResult run_task(const Case& c, const PreparedRun& r, double speed, bool inje
   SweepIndicatorAccumulator indicators(c.sweep.transient, c.time.step * c.time.output_every);
   ReducedRunOptions options;
   options.step = r.run.step;
-  options.step_key = c.source + ": sweep run " + r.run.name() + ": time_step";
+  options.step_key = c.source + ": sweep run " + run_name(r.run) + ": time_step";
   options.casing_modes = r.run.casing_modes;
   options.selection = r.run.selection;
   options.run.checkpoint = throw_if_interrupted;
@@ -315,7 +320,7 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
     ++received;
     if (!r.error.empty())
       failures.push_back("speed " + speed_text(c.sweep.speeds[static_cast<size_t>(r.task / n_runs)]) +
-                         " rad/s, run " + runs[static_cast<size_t>(r.task % n_runs)].run.name() +
+                         " rad/s, run " + run_name(runs[static_cast<size_t>(r.task % n_runs)].run) +
                          " (rank " + std::to_string(rank) + "): " + r.error);
   };
   for (;;) {
@@ -413,7 +418,7 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
     for (double s : per_speed)
       total += s;
     const PreparedRun& r = runs[static_cast<size_t>(j)];
-    summary["runs"].push_back({{"name", r.run.name()},
+    summary["runs"].push_back({{"name", run_name(r.run)},
                                {"method", r.run.method},
                                {"modes", r.run.modes},
                                {"basis_s", r.basis_seconds},

@@ -348,7 +348,6 @@ Case parse_case(const json& document, const std::string& source) {
 }
 
 std::string CampaignRun::name() const {
-  if (method == "full") return "full";
   std::string out = method + "-" + std::to_string(modes);
   if (selection != "lowest") out += "-" + selection;
   if (casing_modes > 0) out += "-c" + std::to_string(casing_modes);

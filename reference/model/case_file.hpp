@@ -137,8 +137,8 @@ struct CampaignRun {
   /// "cb-64" for the first round's runs; the issue-14 axes append
   /// "-<selection>" (not lowest), "-c<N_c>" (modal casing) and "-dt-own" or
   /// "-dt-<step>" (not the case's step): "cb-64-families-c20-dt-own". The
-  /// campaign's runs/ directory and the thresholds' key. "full" for the
-  /// full model.
+  /// campaign's runs/ directory and the thresholds' key ("full-0" for the
+  /// campaign's reference).
   std::string name() const;
 };
 
