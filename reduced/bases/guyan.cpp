@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 
@@ -14,10 +15,23 @@ namespace rsi {
 namespace {
 
 /// CHOLMOD's factorization with its factor readable (Eigen keeps it protected).
+/// CHOLMOD out of memory throws std::bad_alloc: Eigen would read a missing
+/// factor (a failed analysis) through a null pointer, and a failed
+/// factorization or solve as a numerical issue of A.
 class CheckedCholmod : public Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> {
 public:
-  explicit CheckedCholmod(const Eigen::SparseMatrix<double>& a)
-      : Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>>(a) {}
+  explicit CheckedCholmod(const Eigen::SparseMatrix<double>& a) {
+    // Eigen's compute(a), with the analysis checked before the factorization.
+    analyzePattern(a);
+    throw_if_out_of_memory();
+    if (m_cholmodFactor == nullptr) return; // defect() says so
+    factorize(a);
+    throw_if_out_of_memory();
+  }
+
+  void throw_if_out_of_memory() {
+    if (cholmod().status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+  }
 
   /// Empty if the factor is that of a positive definite matrix, else why not.
   std::string defect() {
@@ -65,6 +79,7 @@ AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
     throw ReductionError(name + " is singular or indefinite (" + defect + "); " + remedy);
   const WorkingSolve solve = [&](const Eigen::MatrixXd& r) {
     Eigen::MatrixXd x = factor.solve(r);
+    factor.throw_if_out_of_memory();
     if (factor.info() != Eigen::Success) throw ReductionError(name + ": CHOLMOD solve failed");
     return x;
   };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <new>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -90,7 +91,11 @@ bool symmetric_eigen(const Eigen::Ref<const Matrix>& a, Eigen::VectorXd& w, Matr
   u = 0.5 * (a + a.transpose());
   w.resize(n);
   if (n == 0) return true;
-  return LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n, u.data(), n, w.data()) == 0;
+  const lapack_int info = LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n, u.data(), n, w.data());
+  // LAPACKE's workspace allocation failed: out of memory, not a failure of a.
+  if (info == LAPACK_WORK_MEMORY_ERROR || info == LAPACK_TRANSPOSE_MEMORY_ERROR)
+    throw std::bad_alloc();
+  return info == 0;
 }
 
 /// The new block from W (n x c), M-orthonormal and M-orthogonal to the basis v.

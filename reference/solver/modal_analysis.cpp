@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <new>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include <Eigen/SparseLU>
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/MatOp/SymShiftInvert.h>
 #include <Spectra/SymGEigsShiftSolver.h>
@@ -29,6 +31,9 @@ Modes dense_modes(const Eigen::SparseMatrix<double>& stiffness,
   Eigen::VectorXd w(n);
   const lapack_int info =
       LAPACKE_dsygvd(LAPACK_COL_MAJOR, 1, 'V', 'L', n, a.data(), n, b.data(), n, w.data());
+  // LAPACKE's workspace allocation failed: out of memory, not a property of (K, M).
+  if (info == LAPACK_WORK_MEMORY_ERROR || info == LAPACK_TRANSPOSE_MEMORY_ERROR)
+    throw std::bad_alloc();
   if (info > n)
     throw ModalError(
         "modal analysis: the mass matrix is not positive definite (LAPACKE_dsygvd info " +
@@ -134,11 +139,33 @@ void block_modes(const Eigen::SparseMatrix<double>& stiffness,
   modes.shapes = result.eigenvectors;
 }
 
+/// Spectra's SymShiftInvert reports any failed SparseLU factorization as
+/// std::invalid_argument, and Eigen's SparseLU turns a failed allocation
+/// into such a failure (it catches std::bad_alloc). Factorizing K - 0 M
+/// again exactly as Spectra does (SymShiftInvertHelper: the selfadjoint
+/// views of the lower triangles, A - sigma B, SparseLU marked symmetric)
+/// tells them apart: the same arithmetic fails the same way on a singular
+/// K, so a failure for lack of memory (SparseLU's message names it) or a
+/// success this time is thrown as std::bad_alloc; anything else is the
+/// singular K the caller reports.
+void throw_if_sparse_lu_out_of_memory(const Eigen::SparseMatrix<double>& stiffness,
+                                      const Eigen::SparseMatrix<double>& mass) {
+  const Eigen::SparseMatrix<double> a = stiffness.selfadjointView<Eigen::Lower>();
+  const Eigen::SparseMatrix<double> b = mass.selfadjointView<Eigen::Lower>();
+  const Eigen::SparseMatrix<double> shifted = a - 0.0 * b;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.isSymmetric(true);
+  lu.compute(shifted);
+  if (lu.info() == Eigen::Success || lu.lastErrorMessage().find("MEMORY") != std::string::npos)
+    throw std::bad_alloc();
+}
+
 /// The `count` lowest eigenpairs by Spectra's shift-invert Lanczos on `op`
-/// ((K - sigma M)^-1, sigma = 0).
-template <class ShiftInvert>
+/// ((K - sigma M)^-1, sigma = 0). `factorization_failed` is called first
+/// when the factorization of K fails (it may throw something more precise).
+template <class ShiftInvert, class OnFailure>
 void lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& mass, int count,
-                   Modes& modes) {
+                   Modes& modes, const OnFailure& factorization_failed) {
   const int n = static_cast<int>(mass.rows());
   using MassProduct = Spectra::SparseSymMatProd<double>;
   MassProduct bop(mass);
@@ -156,6 +183,7 @@ void lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& mass, int
     values = solver.eigenvalues();
     vectors = solver.eigenvectors();
   } catch (const std::invalid_argument& e) { // Spectra's SymShiftInvert: factorization failed
+    factorization_failed();
     throw ModalError(
         std::string("modal analysis: the stiffness matrix is singular (shift-invert about 0): ") +
         e.what());
@@ -182,7 +210,8 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
   const BlockShiftInvertOptions options = block_options(count, n);
   if (factorized == nullptr && n < block_method_min_dofs) {
     Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse> op(stiffness, mass);
-    lanczos_modes(op, mass, count, modes);
+    lanczos_modes(op, mass, count, modes,
+                  [&] { throw_if_sparse_lu_out_of_memory(stiffness, mass); });
   } else if (options.block_size > 0) {
     block_modes(stiffness, mass, count, options, factorized, modes);
   } else {
@@ -193,7 +222,7 @@ Modes sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
     if (!op.factorized())
       throw ModalError("modal analysis: the stiffness matrix is singular or indefinite (" +
                        op.message() + ")");
-    lanczos_modes(op, mass, count, modes);
+    lanczos_modes(op, mass, count, modes, [] {});
   }
   std::string why;
   const double largest = sparse_largest_eigenvalue(stiffness, mass, why);
