@@ -326,6 +326,8 @@ int main(int argc, char** argv) {
       return failure("error", e, 2);
     } catch (const rsi::StabilityError& e) {
       return failure("error", e, 2);
+    } catch (const rsi::ModalResolutionError& e) {
+      return failure("error", e, 2);
     } catch (const rsi::ReducedIntegrationError& e) {
       return failure("error: numerical failure", e, 3);
     } catch (const rsi::IntegrationError& e) {

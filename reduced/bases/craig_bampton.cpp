@@ -1,6 +1,7 @@
 #include "craig_bampton.hpp"
 
 #include <chrono>
+#include <sstream>
 #include <string>
 
 #include "guyan.hpp"
@@ -32,6 +33,23 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
     } else {
       psi = constraint_modes(stiffness, p);
       fixed = lowest_modes(k_ii, m_ii, eta, solver);
+      // eta >= n_I/4: the dense solver's eigenvalues as they are. K_II passed
+      // the definiteness check of its factor above (constraint_modes), so a
+      // lowest one under the dense solver's resolution n eps lambda_max
+      // (dense_resolution, modal_analysis.hpp) is a stiff model's, which
+      // the dense solver cannot place (a blade 1e-7 m thick: 7 % off, or
+      // negative), and shift-invert does not reach this many modes.
+      if (solver == ModalSolver::dense && !(fixed.omega_squared(0) > dense_resolution(fixed))) {
+        std::ostringstream message;
+        message << "Craig-Bampton: with eta = " << eta
+                << " fixed-interface modes (n_I/4 or more) every mode of K_II comes from the "
+                   "dense solver, which does not resolve the lowest eigenvalue "
+                << fixed.omega_squared(0)
+                << " rad^2/s^2 (<= n eps lambda_max = " << dense_resolution(fixed)
+                << ") of this stiff model; use at most " << (p.n_interior() - 1) / 4
+                << " modes (shift-invert resolves them)";
+        throw ReductionError(message.str());
+      }
     }
     t.leftCols(eta) = place_rows(p.n(), p.interior, fixed.shapes);
     basis.mode_omega = fixed.omega_squared.cwiseSqrt();
