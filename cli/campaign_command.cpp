@@ -26,6 +26,7 @@
 #include "report_script.hpp"
 #include "run_outputs.hpp"
 #include "staged_output.hpp"
+#include "worker_threads.hpp"
 
 namespace rsi {
 namespace {
@@ -37,6 +38,12 @@ struct CampaignResult {
   std::vector<double> blade1_gap;            ///< for the error norms
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
 };
+
+/// Thrown at a run's checkpoint once another worker has ended the campaign
+/// (out of memory, a failed write): the run is
+/// abandoned, not failed. No std::exception, so no handler of a run takes
+/// it for the run's own failure; run_on_threads rethrows the cause.
+struct CampaignEnded {};
 
 std::string run_name(const CampaignRun& r) {
   return r.method + "-" + std::to_string(r.modes);
@@ -106,11 +113,16 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     const int n_tangents = c.operating_point.friction_law == FrictionLaw::coulomb ? 1 : 0;
     r.history->append(history_csv_header(c.bladed_disk.n_blades, n_tangents));
   }
+  std::atomic<bool> failed{false}; // a worker ended the campaign: the others stop
   auto worker = [&]() {
-    for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {
+    for (size_t i = next++; i < runs.size() && pending_signal() == 0 && !failed; i = next++) {
       CampaignResult& r = runs[i];
       ReducedRunOptions run_options;
-      run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign
+      // A signal abandons the campaign, and so does another worker ending it.
+      run_options.run.checkpoint = [&failed] {
+        throw_if_interrupted();
+        if (failed) throw CampaignEnded();
+      };
       std::string row;
       run_options.run.history_sink = [&](const HistoryRow& h) {
         row.clear();
@@ -123,6 +135,10 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
                        ? run_reference(c, run_options.run)
                        : run_reduced(c, r.run.method, r.run.modes, run_options).run;
         if (!r.result.summary.completed) r.error = r.result.summary.status;
+      } catch (const std::bad_alloc&) {
+        throw; // out of memory ends the campaign (exit 1, --out as it was), not one run
+      } catch (const OutputError&) {
+        throw; // so does a failed write (exit 2 naming the file): the disk, not the run
       } catch (const std::exception& e) {
         r.error = e.what();
       }
@@ -133,11 +149,9 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
                        : r.error.c_str());
     }
   };
-  std::vector<std::thread> threads;
-  for (int t = 0; t < std::min<int>(jobs, static_cast<int>(runs.size())); ++t)
-    threads.emplace_back(worker);
-  for (std::thread& t : threads)
-    t.join();
+  // Every thread joined, whatever happens; the first exception a worker let
+  // out (out of memory, a failed write) is rethrown here (worker_threads.hpp).
+  run_on_threads(std::min<int>(jobs, static_cast<int>(runs.size())), worker, failed);
   throw_if_interrupted();
   if (!runs[0].error.empty())
     throw IntegrationError("campaign: the reference run failed: " + runs[0].error);

@@ -15,9 +15,11 @@ void run_on_threads(int count, const std::function<void()>& worker, std::atomic<
     try {
       worker();
     } catch (...) {
-      failed = true;
+      // `first` before `failed`: a worker that stops because it sees
+      // `failed` (by an exception of its own) must not be taken for the cause.
       const std::lock_guard<std::mutex> lock(guard);
       if (!first) first = std::current_exception();
+      failed = true;
     }
   };
   std::vector<std::thread> threads;

@@ -9,8 +9,11 @@
 //
 // run_on_threads starts `count` threads running `worker` and joins every
 // one of them whatever happens. An exception a worker lets out sets
-// `failed` (the other workers read it to stop taking jobs) and the first
-// one is rethrown in the caller once all threads have joined. A thread
+// `failed` (the other workers read it to stop taking jobs, or to abandon
+// the job they are in by an exception of their own) and the first one is
+// rethrown in the caller once all threads have joined: it is recorded
+// before `failed` is set, so a worker that stopped because of `failed`
+// is never taken for the cause. A thread
 // that cannot be started is no error: the workers already running share
 // the work (they take jobs in turn), and with none started the caller runs
 // `worker` itself.
