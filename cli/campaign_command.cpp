@@ -12,10 +12,14 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
+#include "campaign_progress.hpp"
+#include "casing.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
@@ -40,10 +44,19 @@ struct CampaignResult {
 };
 
 /// Thrown at a run's checkpoint once another worker has ended the campaign
-/// (out of memory, a failed write): the run is
+/// (out of memory, a failed write, the reference's bad step): the run is
 /// abandoned, not failed. No std::exception, so no handler of a run takes
 /// it for the run's own failure; run_on_threads rethrows the cause.
 struct CampaignEnded {};
+
+/// `e` with the remedy a campaign offers: it has no --force.
+StabilityError without_force(const StabilityError& e) {
+  std::string what = e.what();
+  const std::string force = " or --force";
+  const size_t at = what.rfind(force);
+  if (at != std::string::npos) what.replace(at, force.size(), " (time.step; a campaign has no --force)");
+  return StabilityError(what);
+}
 
 std::string run_name(const CampaignRun& r) {
   return r.method + "-" + std::to_string(r.modes);
@@ -82,6 +95,16 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   {
     const BladedDisk bd = assemble_bladed_disk(c);
     disk_dofs = bd.n_dofs();
+    // The step against one dof's Rayleigh quotient of each part (a lower
+    // bound of omega_max, run_monitor.hpp), before any run: the runs would
+    // each refuse it, the reference after its eigensolver (issue 13, class 9).
+    const Casing casing = assemble_casing(c);
+    try {
+      check_time_step_bound(c.time.step, bd.stiffness, bd.mass, false, "bladed disk");
+      check_time_step_bound(c.time.step, casing.stiffness, casing.mass, false, "casing");
+    } catch (const StabilityError& e) {
+      throw without_force(e);
+    }
     const int most = disk_dofs - static_cast<int>(bd.boundary.size());
     for (const CampaignRun& r : c.campaign)
       if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
@@ -99,7 +122,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   for (size_t i = 0; i < c.campaign.size(); ++i)
     runs[i + 1].run = c.campaign[i];
   std::atomic<size_t> next{0};
-  std::mutex print;
+  CampaignProgress progress(static_cast<int>(runs.size()), ::isatty(STDERR_FILENO) != 0);
   // Each history is streamed to its file as it is produced (a temporary
   // file, committed only when every run is done: a failed campaign writes
   // none), keeping only the blade-1 gap in memory: a campaign's memory no
@@ -123,6 +146,9 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
         throw_if_interrupted();
         if (failed) throw CampaignEnded();
       };
+      run_options.run.progress = [&progress, i](double f) {
+        progress.update(static_cast<int>(i), f);
+      };
       std::string row;
       run_options.run.history_sink = [&](const HistoryRow& h) {
         row.clear();
@@ -139,18 +165,23 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
         throw; // out of memory ends the campaign (exit 1, --out as it was), not one run
       } catch (const OutputError&) {
         throw; // so does a failed write (exit 2 naming the file): the disk, not the run
+      } catch (const StabilityError& e) {
+        // The reference's step is bad input (exit 2, as for simulate): no
+        // campaign without its reference. A reduced run's own limit fails that run.
+        if (i == 0) throw without_force(e);
+        r.error = e.what();
       } catch (const std::exception& e) {
         r.error = e.what();
       }
-      const std::lock_guard<std::mutex> lock(print);
-      std::fprintf(stderr, "%-10s %s\n", run_name(r.run).c_str(),
-                   r.error.empty()
-                       ? ("done in " + std::to_string(r.result.summary.wall_seconds) + " s").c_str()
-                       : r.error.c_str());
+      progress.finished(static_cast<int>(i), run_name(r.run),
+                        r.error.empty()
+                            ? "done in " + std::to_string(r.result.summary.wall_seconds) + " s"
+                            : r.error);
     }
   };
   // Every thread joined, whatever happens; the first exception a worker let
-  // out (out of memory, a failed write) is rethrown here (worker_threads.hpp).
+  // out (out of memory, a failed write, the reference's bad step) is
+  // rethrown here (worker_threads.hpp).
   run_on_threads(std::min<int>(jobs, static_cast<int>(runs.size())), worker, failed);
   throw_if_interrupted();
   if (!runs[0].error.empty())
