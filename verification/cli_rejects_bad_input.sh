@@ -88,6 +88,7 @@ variant("clearance", lambda d: d["casing"].update(radius=0.499))
 variant("unstable", lambda d: d["time"].update(step=3e-6))
 variant("largest-casing", lambda d: d["casing"].update(n_elements=100000))
 variant("fine-casing", lambda d: d["casing"].update(n_elements=4000))
+variant("largest-resolved-casing", lambda d: (d["casing"].update(n_elements=10000), d["time"].update(step=5e-10, duration=5e-9)))
 variant("thin-blades", lambda d: d["bladed_disk"]["blade_section"].update(thickness=1e-8))
 variant("thin-casing", lambda d: d["casing"]["section"].update(thickness=1e-7))
 variant("curled", lambda d: d["bladed_disk"].update(n_blade_elements=1000, kink_angle_deg=1.8))
@@ -193,13 +194,19 @@ expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" re
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" reduce "$good" --method cb --modes -1 --out "$work/out"
 
 # simulate
-expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
+expect 2 "time.step = 3e-06 s is not below the central-difference stability limit of the bladed disk: 2/omega_max <= 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
 # Cheap checks first (issue 13, class 9): a fine casing (4000 elements,
 # 16000 dofs) cannot run at the default step; the one-dof Rayleigh bound
 # says so before the Lanczos eigensolver and before a basis is built.
 # timeout: the old code ran its eigensolver for minutes on the largest one.
-expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 2/sqrt(max_i K_ii/M_ii) = 4.03505e-09 s" -- timeout 60 "$rsi" simulate "$work/fine-casing.json" --out "$work/out"
+expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 1.65315e-09 s" -- timeout 60 "$rsi" simulate "$work/fine-casing.json" --out "$work/out"
 expect 2 "not below the central-difference stability limit of the casing" -- timeout 60 "$rsi" simulate "$work/fine-casing.json" --method cb --modes 10 --out "$work/out"
+# The largest casing the definiteness check accepts (10,000 elements) at
+# 5e-10 s: above its 2/omega_max = 2.636e-10 s, below the one-dof bound
+# 6.46e-10 s. The bound now includes the power method's Rayleigh quotient
+# (2.64549e-10 s, 0.4 s); with the one-dof bound alone the Lanczos eigensolver
+# ran 264 s before refusing it (issue 13, class 9).
+expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 2.64549e-10 s" -- timeout 60 "$rsi" simulate "$work/largest-resolved-casing.json" --method cb --modes 10 --out "$work/out"
 # The model as a whole (issue 13, class 7): K positive definite to working
 # precision (reference/model/part_definiteness). The largest casing, 100000
 # elements, bends smoothly with an energy 2e16 times smaller than its terms,
