@@ -19,6 +19,7 @@
 
 #include "bladed_disk.hpp"
 #include "campaign_progress.hpp"
+#include "casing_memory.hpp"
 #include "casing.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
@@ -105,6 +106,9 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     } catch (const StabilityError& e) {
       throw without_force(e);
     }
+    // The reduced runs' dense casing matrices, as many at once as threads run them.
+    check_dense_casing_fits(c, casing.n_dofs(),
+                            std::min<int>(jobs, static_cast<int>(c.campaign.size())));
     const int most = disk_dofs - static_cast<int>(bd.boundary.size());
     for (const CampaignRun& r : c.campaign)
       if (r.method == "guyan" ? r.modes != 0 : r.modes > most)
@@ -141,6 +145,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     for (size_t i = next++; i < runs.size() && pending_signal() == 0 && !failed; i = next++) {
       CampaignResult& r = runs[i];
       ReducedRunOptions run_options;
+      run_options.runs_at_once = std::min<int>(jobs, static_cast<int>(c.campaign.size()));
       // A signal abandons the campaign, and so does another worker ending it.
       run_options.run.checkpoint = [&failed] {
         throw_if_interrupted();

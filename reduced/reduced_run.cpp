@@ -7,6 +7,7 @@
 #include "casing_forcing.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
+#include "casing_memory.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_integrator.hpp"
 #include "reduction.hpp"
@@ -19,6 +20,7 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
   // The full casing's step limit, bounded cheaply before the basis is built.
   const Casing casing = assemble_casing(c);
   check_time_step_bound(c.time.step, casing.stiffness, casing.mass, options.run.force, "casing");
+  check_dense_casing_fits(c, casing.n_dofs(), options.runs_at_once);
   return run_reduced(c, reduce_bladed_disk(assemble_bladed_disk(c), method, modes), options);
 }
 

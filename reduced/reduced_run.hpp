@@ -26,6 +26,9 @@ struct ReducedRunOptions {
   /// With full_field: when set, each field row is handed to it as it is
   /// produced and ReducedRunResult::field stays empty (streamed output).
   FieldSink field_sink;
+  /// Reduced runs in progress at once in this process (a campaign's
+  /// threads), for the memory check of their dense casing matrices.
+  int runs_at_once = 1;
 };
 
 struct ReducedRunResult {
