@@ -55,7 +55,8 @@ StabilityError without_force(const StabilityError& e) {
   std::string what = e.what();
   const std::string force = " or --force";
   const size_t at = what.rfind(force);
-  if (at != std::string::npos) what.replace(at, force.size(), " (time.step; a campaign has no --force)");
+  if (at != std::string::npos)
+    what.replace(at, force.size(), " (time.step; a campaign has no --force)");
   return StabilityError(what);
 }
 

@@ -7,7 +7,9 @@
 namespace rsi {
 
 CampaignProgress::CampaignProgress(int n_runs, bool terminal)
-    : m_fraction(static_cast<size_t>(n_runs), 0.0), m_start(Clock::now()), m_terminal(terminal) {}
+    : m_fraction(static_cast<size_t>(n_runs), 0.0)
+    , m_start(Clock::now())
+    , m_terminal(terminal) {}
 
 double CampaignProgress::elapsed() const {
   return std::chrono::duration<double>(Clock::now() - m_start).count();

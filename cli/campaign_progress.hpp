@@ -47,7 +47,7 @@ private:
   int m_done = 0;                 ///< runs finished
   Clock::time_point m_start;
   bool m_terminal;
-  bool m_drawn = false;  ///< a live line is on the terminal, not yet ended
+  bool m_drawn = false;      ///< a live line is on the terminal, not yet ended
   double m_last_drawn = 0.0; ///< elapsed seconds when it was drawn
 };
 

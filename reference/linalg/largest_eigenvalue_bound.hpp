@@ -24,9 +24,9 @@
 namespace rsi {
 
 struct LargestEigenvalueBound {
-  double value = 0.0;     ///< a lower bound of lambda_max (0 if none found)
-  double one_dof = 0.0;   ///< max_i K_ii / M_ii, its part from the unit vectors
-  int iterations = 0;     ///< power steps made (0: M could not be factorized)
+  double value = 0.0;   ///< a lower bound of lambda_max (0 if none found)
+  double one_dof = 0.0; ///< max_i K_ii / M_ii, its part from the unit vectors
+  int iterations = 0;   ///< power steps made (0: M could not be factorized)
 };
 
 LargestEigenvalueBound largest_eigenvalue_lower_bound(const Eigen::SparseMatrix<double>& stiffness,
