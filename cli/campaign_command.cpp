@@ -12,10 +12,14 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
+#include "campaign_progress.hpp"
+#include "casing_memory.hpp"
 #include "casing.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
@@ -28,6 +32,7 @@
 #include "run_outputs.hpp"
 #include "run_step.hpp"
 #include "staged_output.hpp"
+#include "worker_threads.hpp"
 
 namespace rsi {
 namespace {
@@ -40,6 +45,22 @@ struct CampaignResult {
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
   int modes_kept = 0; ///< the basis's modes (a selection keeps whole units, rounding down)
 };
+
+/// Thrown at a run's checkpoint once another worker has ended the campaign
+/// (out of memory, a failed write, the reference's bad step): the run is
+/// abandoned, not failed. No std::exception, so no handler of a run takes
+/// it for the run's own failure; run_on_threads rethrows the cause.
+struct CampaignEnded {};
+
+/// `e` with the remedy a campaign offers: it has no --force.
+StabilityError without_force(const StabilityError& e) {
+  std::string what = e.what();
+  const std::string force = " or --force";
+  const size_t at = what.rfind(force);
+  if (at != std::string::npos)
+    what.replace(at, force.size(), " (time.step; a campaign has no --force)");
+  return StabilityError(what);
+}
 
 std::string run_name(const CampaignRun& r) {
   return r.name();
@@ -101,6 +122,22 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
   const int disk_dofs = check_runs_against_model(c, c.campaign, c.source + ": key 'campaign'");
+  {
+    // The step against one dof's Rayleigh quotient of each part (a lower
+    // bound of omega_max, run_monitor.hpp), before any run: the runs would
+    // each refuse it, the reference after its eigensolver (issue 13, class 9).
+    const BladedDisk bd = assemble_bladed_disk(c);
+    const Casing casing = assemble_casing(c);
+    try {
+      check_time_step_bound(c.time.step, bd.stiffness, bd.mass, false, "bladed disk");
+      check_time_step_bound(c.time.step, casing.stiffness, casing.mass, false, "casing");
+    } catch (const StabilityError& e) {
+      throw without_force(e);
+    }
+    // The reduced runs' dense casing matrices, as many at once as threads run them.
+    check_dense_casing_fits(c, casing.n_dofs(),
+                            std::min<int>(jobs, static_cast<int>(c.campaign.size())));
+  }
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.
@@ -109,7 +146,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   for (size_t i = 0; i < c.campaign.size(); ++i)
     runs[i + 1].run = c.campaign[i];
   std::atomic<size_t> next{0};
-  std::mutex print;
+  CampaignProgress progress(static_cast<int>(runs.size()), ::isatty(STDERR_FILENO) != 0);
   // Each history is streamed to its file as it is produced (a temporary
   // file, committed only when every run is done: a failed campaign writes
   // none), keeping only the blade-1 gap in memory: a campaign's memory no
@@ -123,15 +160,24 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     const int n_tangents = c.operating_point.friction_law == FrictionLaw::coulomb ? 1 : 0;
     r.history->append(history_csv_header(c.bladed_disk.n_blades, n_tangents));
   }
+  std::atomic<bool> failed{false}; // a worker ended the campaign: the others stop
   auto worker = [&]() {
-    for (size_t i = next++; i < runs.size() && pending_signal() == 0; i = next++) {
+    for (size_t i = next++; i < runs.size() && pending_signal() == 0 && !failed; i = next++) {
       CampaignResult& r = runs[i];
       ReducedRunOptions run_options;
       run_options.step = r.run.step;
       run_options.step_key = c.source + ": campaign run " + run_name(r.run) + ": time_step";
       run_options.casing_modes = r.run.casing_modes;
       run_options.selection = r.run.selection;
-      run_options.run.checkpoint = throw_if_interrupted; // a signal abandons the campaign
+      run_options.runs_at_once = std::min<int>(jobs, static_cast<int>(c.campaign.size()));
+      // A signal abandons the campaign, and so does another worker ending it.
+      run_options.run.checkpoint = [&failed] {
+        throw_if_interrupted();
+        if (failed) throw CampaignEnded();
+      };
+      run_options.run.progress = [&progress, i](double f) {
+        progress.update(static_cast<int>(i), f);
+      };
       std::string row;
       run_options.run.history_sink = [&](const HistoryRow& h) {
         row.clear();
@@ -148,21 +194,28 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
           r.result = std::move(reduced.run);
         }
         if (!r.result.summary.completed) r.error = r.result.summary.status;
+      } catch (const std::bad_alloc&) {
+        throw; // out of memory ends the campaign (exit 1, --out as it was), not one run
+      } catch (const OutputError&) {
+        throw; // so does a failed write (exit 2 naming the file): the disk, not the run
+      } catch (const StabilityError& e) {
+        // The reference's step is bad input (exit 2, as for simulate): no
+        // campaign without its reference. A reduced run's own limit fails that run.
+        if (i == 0) throw without_force(e);
+        r.error = e.what();
       } catch (const std::exception& e) {
         r.error = e.what();
       }
-      const std::lock_guard<std::mutex> lock(print);
-      std::fprintf(stderr, "%-10s %s\n", run_name(r.run).c_str(),
-                   r.error.empty()
-                       ? ("done in " + std::to_string(r.result.summary.wall_seconds) + " s").c_str()
-                       : r.error.c_str());
+      progress.finished(static_cast<int>(i), run_name(r.run),
+                        r.error.empty()
+                            ? "done in " + std::to_string(r.result.summary.wall_seconds) + " s"
+                            : r.error);
     }
   };
-  std::vector<std::thread> threads;
-  for (int t = 0; t < std::min<int>(jobs, static_cast<int>(runs.size())); ++t)
-    threads.emplace_back(worker);
-  for (std::thread& t : threads)
-    t.join();
+  // Every thread joined, whatever happens; the first exception a worker let
+  // out (out of memory, a failed write, the reference's bad step) is
+  // rethrown here (worker_threads.hpp).
+  run_on_threads(std::min<int>(jobs, static_cast<int>(runs.size())), worker, failed);
   throw_if_interrupted();
   if (!runs[0].error.empty())
     throw IntegrationError("campaign: the reference run failed: " + runs[0].error);

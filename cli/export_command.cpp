@@ -11,6 +11,7 @@
 #include "output_files.hpp"
 #include "paper_components.hpp"
 #include "staged_output.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -21,7 +22,7 @@ std::string dofs_csv(const DofMap& dofs) {
   for (size_t i = 0; i < dofs.size(); ++i)
     csv << i << "," << dofs[i].node << "," << dofs[i].kind << "," << (dofs[i].boundary ? 1 : 0)
         << "\n";
-  return csv.str();
+  return stream_text(csv);
 }
 
 std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
@@ -30,7 +31,7 @@ std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
   csv << "node,x,y,z\n";
   for (const ComponentNode& node : nodes)
     csv << node.id << "," << node.x(0) << "," << node.x(1) << "," << node.x(2) << "\n";
-  return csv.str();
+  return stream_text(csv);
 }
 
 /// Writes into `dir` (staged); `shown` is the folder named in the message.

@@ -2,7 +2,7 @@
 // reduced solvers with their verification (see README.md and SPEC).
 //
 // Exit status: 0 success, 2 bad input (case file, option, output
-// directory), 3 numerical failure, 1 anything else.
+// directory), 3 numerical failure, 1 anything else (out of memory included).
 
 #include <cerrno>
 #include <cmath>
@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -425,6 +426,8 @@ int main(int argc, char** argv) {
       return failure("error", e, 2);
     } catch (const rsi::StabilityError& e) {
       return failure("error", e, 2);
+    } catch (const rsi::ModalResolutionError& e) {
+      return failure("error", e, 2);
     } catch (const rsi::ReducedIntegrationError& e) {
       return failure("error: numerical failure", e, 3);
     } catch (const rsi::IntegrationError& e) {
@@ -433,6 +436,16 @@ int main(int argc, char** argv) {
       return failure("error: numerical failure", e, 3);
     } catch (const rsi::ModalError& e) {
       return failure("error: numerical failure", e, 3);
+    } catch (const std::bad_alloc&) {
+      // Every allocation failure arrives here as std::bad_alloc: operator
+      // new's, and the C libraries' out-of-memory statuses (CHOLMOD,
+      // LAPACKE), which rsi turns into it. By now the command's memory is
+      // released (the stack is unwound), and the message is a literal.
+      std::fputs("rsi: error: out of memory: an allocation failed; nothing was written to "
+                 "--out; free memory or raise the limit (ulimit -v), or make the model or "
+                 "the run smaller (elements, modes, --jobs)\n",
+                 stderr);
+      return 1;
     } catch (const std::exception& e) {
       return failure("error", e, 1);
     }

@@ -20,6 +20,7 @@
 #include "reduction.hpp"
 #include "report_script.hpp"
 #include "staged_output.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -139,8 +140,8 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
   summary["full_max_relative_residual"] = full_residual.maxCoeff();
 
   const std::string stage = output.open(options.out, "--out", modal_campaign_output_set());
-  write_text_file(stage + "/modal_convergence.csv", table.str());
-  write_text_file(stage + "/modal_errors.csv", errors.str());
+  write_text_file(stage + "/modal_convergence.csv", stream_text(table));
+  write_text_file(stage + "/modal_errors.csv", stream_text(errors));
   write_text_file(stage + "/modal_summary.json", summary.dump(2) + "\n");
   std::printf("wrote %s/{modal_convergence.csv,modal_errors.csv,modal_summary.json}\n",
               options.out.c_str());

@@ -11,6 +11,7 @@
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
 #include "staged_output.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -33,7 +34,7 @@ ModesTable table_of(const ComponentInput& input, int count) {
     if (nd) csv << *nd;
     csv << "\n";
   }
-  table.csv = csv.str();
+  table.csv = stream_text(csv);
   return table;
 }
 

@@ -52,10 +52,13 @@ void OutputDirectories::make(const std::string& dir, const std::string& option) 
                       allowed);
 }
 
-void OutputDirectories::remove_empty() {
+void OutputDirectories::remove_empty() noexcept {
   for (auto p = m_created.rbegin(); p != m_created.rend(); ++p) {
-    std::error_code error;
-    if (std::filesystem::is_empty(*p, error)) std::filesystem::remove(*p, error);
+    try { // is_empty opens the directory, which allocates
+      std::error_code error;
+      if (std::filesystem::is_empty(*p, error)) std::filesystem::remove(*p, error);
+    } catch (...) { // out of memory: the directory stays, empty
+    }
   }
   m_created.clear();
 }

@@ -28,8 +28,9 @@ public:
   /// the directory.
   void make(const std::string& dir, const std::string& option);
   /// Removes the directories `make` created that are still empty, deepest
-  /// first (a directory holding a file stays).
-  void remove_empty();
+  /// first (a directory holding a file stays). Never throws: it runs while
+  /// a failed command unwinds.
+  void remove_empty() noexcept;
 
 private:
   std::vector<std::filesystem::path> m_created; ///< parents first

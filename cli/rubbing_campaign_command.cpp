@@ -29,6 +29,7 @@
 #include "report_script.hpp"
 #include "rubbing_run.hpp"
 #include "run_outputs.hpp"
+#include "stream_text.hpp"
 #include "terminal_progress.hpp"
 #include "staged_output.hpp"
 
@@ -192,7 +193,7 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                 r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
                 e.einf_lambda);
   }
-  write_text_file(stage + "/convergence.csv", csv.str());
+  write_text_file(stage + "/convergence.csv", stream_text(csv));
   write_text_file(stage + "/rubbing.json", rubbing_json(model));
   std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
               options.out.c_str(), options.out.c_str());

@@ -174,10 +174,19 @@ void StagedOutput::publish() {
   m_directories.remove_empty();
 }
 
-void StagedOutput::abandon() {
+void StagedOutput::abandon() noexcept {
+  // Runs in the destructor, also while an exception unwinds (out of
+  // memory included): it must not throw. remove_all and the checks of
+  // remove_empty build paths, which allocate; by now the command's own
+  // memory is released, but if an allocation still fails, what is left is
+  // hidden (.rsi-stage-PID, removed by the next run on --out) and the lock
+  // is released all the same.
   if (!m_staging.empty()) {
-    std::error_code error;
-    fs::remove_all(m_staging, error);
+    try {
+      std::error_code error;
+      fs::remove_all(m_staging, error);
+    } catch (...) {
+    }
     m_staging.clear();
   }
   m_lock.reset();

@@ -53,8 +53,9 @@ public:
   /// entry of the set names (a command writing outside its set).
   void publish();
   /// Removes the staging folder and the lock file, unlocks, and removes the
-  /// directories open created that are empty: --out as it was.
-  void abandon();
+  /// directories open created that are empty: --out as it was. Never throws
+  /// (it runs during unwinding).
+  void abandon() noexcept;
 
 private:
   OutputDirectories m_directories;

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "casing.hpp"
+#include "casing_memory.hpp"
 #include "commands.hpp"
 #include "critical_step.hpp"
 #include "interaction_lines.hpp"
@@ -223,6 +224,10 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
   if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
   const int disk_dofs = check_runs_against_model(c, c.sweep.runs, c.source + ": key 'sweep.runs'");
+  // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
+  if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
+                  [](const CampaignRun& r) { return r.method != "full"; }))
+    check_dense_casing_fits(c, assemble_casing(c).n_dofs(), jobs);
   int inject = -1; // the speed index whose runs fail on purpose (tests only)
   if (const char* text = std::getenv("RSI_SWEEP_FAIL_SPEED")) inject = std::atoi(text);
 

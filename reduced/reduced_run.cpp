@@ -7,6 +7,7 @@
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "casing_forcing.hpp"
+#include "casing_memory.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
 #include "reduced_contact.hpp"
@@ -25,6 +26,7 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
     const double dt = options.step.kind == StepRule::Kind::given ? options.step.step : c.time.step;
     check_time_step_bound(dt, casing.stiffness, casing.mass, options.run.force, "casing");
   }
+  check_dense_casing_fits(c, casing.n_dofs(), options.runs_at_once);
   return run_reduced(c, build_reduced_basis(c, method, modes, options.selection), options);
 }
 

@@ -39,6 +39,9 @@ struct ReducedRunOptions {
   /// How the kept modes are chosen (mode_selection.hpp): "lowest" (the
   /// first round's bases), "families", "forced" or "participation".
   std::string selection = "lowest";
+  /// Reduced runs in progress at once in this process (a campaign's
+  /// threads), for the memory check of their dense casing matrices.
+  int runs_at_once = 1;
 };
 
 struct ReducedRunResult {

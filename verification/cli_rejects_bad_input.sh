@@ -87,6 +87,11 @@ variant("range", lambda d: d["bladed_disk"]["blade_section"].update(thickness=-0
 variant("clearance", lambda d: d["casing"].update(radius=0.499))
 variant("unstable", lambda d: d["time"].update(step=3e-6))
 variant("largest-casing", lambda d: d["casing"].update(n_elements=100000))
+variant("fine-casing", lambda d: d["casing"].update(n_elements=4000))
+variant("casing-2000", lambda d: (d["casing"].update(n_elements=2000), d["time"].update(step=5e-9, duration=5e-6), d.update(campaign=[{"method": "cb", "modes": [10, 20]}])))
+variant("largest-resolved-casing", lambda d: (d["casing"].update(n_elements=10000), d["time"].update(step=5e-10, duration=5e-9)))
+variant("thin-blades", lambda d: d["bladed_disk"]["blade_section"].update(thickness=1e-8))
+variant("thin-casing", lambda d: d["casing"]["section"].update(thickness=1e-7))
 variant("curled", lambda d: d["bladed_disk"].update(n_blade_elements=1000, kink_angle_deg=1.8))
 variant("no-campaign", lambda d: d.pop("campaign"))
 variant("campaign-too-many", lambda d: d.update(campaign=[{"method": "cb", "modes": [0, 700]}]))
@@ -196,13 +201,54 @@ expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" re
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" reduce "$good" --method cb --modes -1 --out "$work/out"
 
 # simulate
-expect 2 "time.step = 3e-06 s is not below the central-difference stability limit 2/omega_max = 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
-# Cheap checks first (issue 13, class 9): the largest casing (100000
-# elements, 400000 dofs) cannot run at the default step; the one-dof
-# Rayleigh bound says so before the Lanczos eigensolver (minutes) and before
-# a basis is built. timeout: the old code still ran its eigensolver at 60 s.
-expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 2/sqrt(max_i K_ii/M_ii) = 6.45608e-12 s" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --out "$work/out"
-expect 2 "not below the central-difference stability limit of the casing" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --method cb --modes 10 --out "$work/out"
+expect 2 "time.step = 3e-06 s is not below the central-difference stability limit of the bladed disk: 2/omega_max <= 2.50711e-06 s" -- "$rsi" simulate "$work/unstable.json" --out "$work/out"
+# Cheap checks first (issue 13, class 9): a fine casing (4000 elements,
+# 16000 dofs) cannot run at the default step; the one-dof Rayleigh bound
+# says so before the Lanczos eigensolver and before a basis is built.
+# timeout: the old code ran its eigensolver for minutes on the largest one.
+expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 1.65315e-09 s" -- timeout 60 "$rsi" simulate "$work/fine-casing.json" --out "$work/out"
+expect 2 "not below the central-difference stability limit of the casing" -- timeout 60 "$rsi" simulate "$work/fine-casing.json" --method cb --modes 10 --out "$work/out"
+# The largest casing the definiteness check accepts (10,000 elements) at
+# 5e-10 s: above its 2/omega_max = 2.636e-10 s, below the one-dof bound
+# 6.46e-10 s. The bound now includes the power method's Rayleigh quotient
+# (2.64549e-10 s, 0.4 s); with the one-dof bound alone the Lanczos eigensolver
+# ran 264 s before refusing it (issue 13, class 9).
+expect 2 "not below the central-difference stability limit of the casing: 2/omega_max <= 2.64549e-10 s" -- timeout 60 "$rsi" simulate "$work/largest-resolved-casing.json" --method cb --modes 10 --out "$work/out"
+# Memory before it is asked for (issue 13, class 1): a reduced run keeps the
+# casing's inverse mass dense, 8 n_c^2 bytes (0.511 GB at 2000 elements,
+# 7996 dofs). Under an address-space limit of 400 MB (ulimit -v; 900 MB for
+# a campaign of two reduced runs on two threads, 1.02 GB) it is refused
+# naming the key before the basis is built; it was exit 1 "out of memory"
+# after the basis and the eigensolvers. Not under AddressSanitizer, which
+# reserves terabytes of address space (no ulimit -v there).
+if ldd "$rsi" | grep -q libasan; then
+  skip "casing too large for the memory: ulimit -v cannot be used with AddressSanitizer"
+else
+  limited_v() { # KB COMMAND...: the command under ulimit -v KB
+    local kb=$1
+    shift
+    bash -c 'ulimit -v "$0"; exec "$@"' "$kb" "$@"
+  }
+  expect 2 "key 'casing.n_elements' (2000): a reduced run keeps the casing's inverse mass dense, 8 n_c^2 = 0.511 GB for its 7996 dofs, more than the 0.41 GB" -- limited_v 400000 "$rsi" simulate "$work/casing-2000.json" --method cb --modes 10 --out "$work/out"
+  expect 2 "2 runs at once: 1.02 GB, more than the 0.922 GB this process may use (physical memory, ulimit -v, ulimit -d); use at most 1898 casing elements or fewer --jobs" -- limited_v 900000 "$rsi" campaign "$work/casing-2000.json" --no-report --out "$work/out"
+fi
+# The model as a whole (issue 13, class 7): K positive definite to working
+# precision (reference/model/part_definiteness). The largest casing, 100000
+# elements, bends smoothly with an energy 2e16 times smaller than its terms,
+# past the 1/gamma_p = 3.75e14 double precision resolves: refused when it
+# is built, naming the keys, before any step check or eigensolver; so are
+# blades 1e-8 m thick (the dense modal path printed negative frequencies)
+# on every command, and a casing 1e-7 m thick.
+expect 2 "the casing's stiffness K is not positive definite to working precision" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --out "$work/out"
+expect 2 "change key 'casing.section.thickness' (0.01 m) or 'casing.n_elements' (100000)" -- timeout 60 "$rsi" simulate "$work/largest-casing.json" --method cb --modes 10 --out "$work/out"
+expect 2 "the casing's stiffness K is not positive definite to working precision" -- "$rsi" modes "$work/largest-casing.json" --part casing --out "$work/out"
+expect 2 "change key 'casing.section.thickness' (1e-07 m)" -- "$rsi" simulate "$work/thin-casing.json" --out "$work/out"
+expect 2 "the bladed disk's stiffness K is not positive definite to working precision" -- "$rsi" modes "$work/thin-blades.json" --out "$work/out"
+expect 2 "change key 'bladed_disk.blade_section.thickness' (1e-08 m) or 'bladed_disk.n_blade_elements' (9)" -- "$rsi" simulate "$work/thin-blades.json" --method cb --modes 10 --out "$work/out"
+expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" simulate "$work/thin-blades.json" --method full --out "$work/out"
+expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" reduce "$work/thin-blades.json" --method ccm --modes 10 --out "$work/out"
+expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" campaign "$work/thin-blades.json" --no-report --out "$work/out"
+expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" export "$work/thin-blades.json" --out "$work/out"
 expect 2 "--method: must be full, cb, ccm, guyan or macneal, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
 expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal: component cases), got 'macneal'" -- "$rsi" simulate "$good" --method macneal --modes 10 --out "$work/out"
 expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" simulate "$good" --method cb --modes 639 --out "$work/out"

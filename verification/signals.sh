@@ -3,7 +3,8 @@
 # with one `rsi: error:` line, no temporary file left, and no output that
 # claims a finished run (the run's --out, created by it, is removed). The
 # runs are long enough (the default case damped to run 1 s: 2e6 steps,
-# about 20 s) to be interrupted in the middle.
+# about 20 s) to be interrupted in the middle; the campaign's report step
+# is interrupted too.
 # Usage: signals.sh RSI SOURCE_DIR
 set -u
 rsi=$1
@@ -46,6 +47,46 @@ interrupt() {
 interrupt simulate-int INT 130 "$rsi" simulate "$work/long.json"
 interrupt simulate-term TERM 143 "$rsi" simulate "$work/long.json" --method full
 interrupt campaign-term TERM 143 "$rsi" campaign "$work/long.json" --no-report
+
+# During the report step (issue 13, class 6: the Python child kept writing
+# after rsi had exited): a 5 ms campaign with its report; SIGTERM once the
+# report script runs (a child of rsi). rsi exits 143, the child is stopped
+# (it is gone 1 s later), and --out is not created.
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/short.json" \
+  time.duration=0.005
+if /usr/bin/python3 -c 'import matplotlib, scipy' 2>/dev/null; then
+  out=$work/out-report
+  "$rsi" campaign "$work/short.json" --out "$out" >"$work/log" 2>"$work/err" &
+  pid=$!
+  child=""
+  for _ in $(seq 1 1200); do # up to 60 s for the runs
+    child=$(pgrep -P "$pid" -f make_campaign_report || true)
+    [ -n "$child" ] || ! kill -0 "$pid" 2>/dev/null || { sleep 0.05; continue; }
+    break
+  done
+  if [ -z "$child" ]; then
+    wait "$pid"
+    fail "campaign-report: no report script seen while rsi ran (exit $?): $(tail -n 2 "$work/err")"
+  else
+    sleep 0.2 # the script has started (imports)
+    kill -TERM "$pid"
+    wait "$pid"
+    status=$?
+    sleep 1
+    if [ "$status" -ne 143 ]; then
+      fail "campaign-report: exit $status after SIGTERM in the report step, expected 143: $(tail -n 2 "$work/err")"
+    elif kill -0 "$child" 2>/dev/null; then
+      fail "campaign-report: the report script (pid $child) still runs after rsi exited"
+      kill -KILL "$child" 2>/dev/null
+    elif [ -e "$out" ]; then
+      fail "campaign-report: output left behind: $(find "$out" | head -n 5)"
+    else
+      echo "ok   campaign-report: SIGTERM in the report step -> exit 143, the script stopped, nothing left in --out"
+    fi
+  fi
+else
+  echo "skipped: campaign-report (python3-matplotlib or python3-scipy missing)"
+fi
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1

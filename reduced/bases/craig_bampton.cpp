@@ -1,6 +1,7 @@
 #include "craig_bampton.hpp"
 
 #include <numeric>
+#include <sstream>
 #include <string>
 
 #include "guyan.hpp"
@@ -33,6 +34,24 @@ FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiff
   } else {
     pool.constraint = constraint_modes(stiffness, p);
     pool.modes = lowest_modes(k_ii, m_ii, count, solver);
+    // count >= n_I/4: the dense solver's eigenvalues as they are. K_II passed
+    // the definiteness check of its factor above (constraint_modes), so a
+    // lowest one under the dense solver's resolution n eps lambda_max
+    // (dense_resolution, modal_analysis.hpp) is a stiff model's, which
+    // the dense solver cannot place (a blade 1e-7 m thick: 7 % off, or
+    // negative), and shift-invert does not reach this many modes.
+    if (solver == ModalSolver::dense &&
+        !(pool.modes.omega_squared(0) > dense_resolution(pool.modes))) {
+      std::ostringstream message;
+      message << "Craig-Bampton: with eta = " << count
+              << " fixed-interface modes (n_I/4 or more) every mode of K_II comes from the "
+                 "dense solver, which does not resolve the lowest eigenvalue "
+              << pool.modes.omega_squared(0)
+              << " rad^2/s^2 (<= n eps lambda_max = " << dense_resolution(pool.modes)
+              << ") of this stiff model; use at most " << (p.n_interior() - 1) / 4
+              << " modes (shift-invert resolves them)";
+      throw ReductionError(message.str());
+    }
   }
   return pool;
 }

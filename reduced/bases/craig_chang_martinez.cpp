@@ -10,6 +10,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "energy_resolution.hpp"
 #include "guyan.hpp"
 #include "modal_analysis.hpp"
 
@@ -41,21 +42,30 @@ FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffne
   if (few_modes(count, n) == ModalSolver::dense) {
     pool.complete = true;
     pool.modes = lowest_modes(stiffness, mass, n, ModalSolver::dense);
-    // The tail sum needs no K^-1, but it is R only for a nonsingular K: a
-    // rigid motion leaves an eigenvalue at the round-off level n eps lambda_max.
-    // That level is also the dense solver's resolution (backward error about
-    // n eps |K|): an elastic lambda_min below it is not resolved either, and
-    // 1/lambda_min in the tail sum would be noise. So the test stays here
-    // (unlike the shift-invert path, which resolves small eigenvalues and
-    // tests |K phi| against the product's rounding, within_product_rounding);
-    // such a stiff model needs the factorized path (issue 13, left open).
-    const Eigen::VectorXd& w2 = pool.modes.omega_squared;
-    const double floor = n * std::numeric_limits<double>::epsilon() * w2(n - 1);
-    if (!(w2(0) > floor)) {
+    // The tail sum needs no K^-1, but it is R only for a nonsingular K, and
+    // 1/lambda_min in it is noise unless the dense solver resolves lambda_min:
+    // it does not at or below its resolution n eps lambda_max
+    // (dense_resolution, modal_analysis.hpp), where a rigid motion's
+    // eigenvalue sits, and so does the elastic lambda_min of a valid but stiff
+    // model (blades 2e-6 m thick; issue 13: such models were called singular
+    // here). A factor of K tells the two apart, and the message says which
+    // (the factorized path below resolves the stiff model with fewer modes;
+    // with this many, shift-invert would not reach the highest ones).
+    if (!(pool.modes.omega_squared(0) > dense_resolution(pool.modes))) {
+      const std::string singular =
+          unresolved(check_positive_definite(stiffness, Eigen::SparseMatrix<double>()));
       std::ostringstream message;
-      message << name << ": the bladed-disk stiffness K (" << square_size(n)
-              << ") is singular or indefinite (lowest eigenvalue of K phi = omega^2 M phi " << w2(0)
-              << " rad^2/s^2 <= n eps lambda_max = " << floor << "); " << stiffness_remedy;
+      message << name << ": the bladed-disk stiffness K (" << square_size(n) << ") ";
+      if (!singular.empty())
+        message << "is singular or indefinite (" << singular << "); " << stiffness_remedy;
+      else
+        message << "is positive definite to working precision, but with psi = " << count
+                << " free modes (n/4 or more) every mode comes from the dense solver, which "
+                   "does not resolve its lowest eigenvalue "
+                << pool.modes.omega_squared(0)
+                << " rad^2/s^2 (<= n eps lambda_max = " << dense_resolution(pool.modes)
+                << "); use at most " << (n - 1) / 4
+                << " free modes (the factorized path resolves them)";
       throw ReductionError(message.str());
     }
     return pool;

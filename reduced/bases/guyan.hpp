@@ -13,6 +13,7 @@
 
 #include "accurate_solve.hpp"
 #include "cholmod_shift_invert.hpp"
+#include "energy_resolution.hpp"
 #include "modal_analysis.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
@@ -24,13 +25,19 @@ namespace rsi {
 /// last bit (accurate_solve). CHOLMOD's simplicial LDL^T does
 /// not stop at a negative or zero pivot, and a singular A factorizes with
 /// round-off pivots, so the factor is checked: a pivot d <= 0 (A indefinite)
-/// or a reciprocal condition estimate min|d| / max|d| < n eps (A singular to
-/// working precision) throws ReductionError "`name` is singular or
-/// indefinite (...); `remedy`", with the column of A and the pivot, or the
-/// estimate.
+/// or a lowest mode (inverse iteration on the factor) whose energy is not
+/// resolved (A not positive definite to working precision, unresolved())
+/// throws ReductionError "`name` is singular or indefinite (...);
+/// `remedy`", with the column of A and the pivot, or the energy and its
+/// rounding.
 AccurateMatrix solve_positive_definite(const Eigen::SparseMatrix<double>& a,
                                        const Eigen::MatrixXd& b, const std::string& name,
                                        const std::string& remedy);
+
+/// Why the factor's lowest mode shows its matrix not positive definite to
+/// working precision (linalg/energy_resolution): its energy not above its
+/// rounding; empty if it is resolved.
+std::string unresolved(const DefinitenessCheck& lowest);
 
 /// The large-model path: from block_method_min_dofs dofs on, one CHOLMOD
 /// factor of A serves both the static solves (accurate_solve with it) and
@@ -42,8 +49,8 @@ inline bool shares_factor(int n) {
 
 /// A's factor (shift-invert operator at shift 0, with `mass` for the
 /// modes), checked as solve_positive_definite checks its own (not positive
-/// definite, or CHOLMOD's rcond < n eps): ReductionError "`name` is
-/// singular or indefinite (...); `remedy`".
+/// definite, or its lowest mode against `mass` not resolved):
+/// ReductionError "`name` is singular or indefinite (...); `remedy`".
 std::unique_ptr<CholmodShiftInvert> factor_positive_definite(const Eigen::SparseMatrix<double>& a,
                                                              const Eigen::SparseMatrix<double>& mass,
                                                              const std::string& name,

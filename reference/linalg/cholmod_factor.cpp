@@ -1,6 +1,7 @@
 #include "cholmod_factor.hpp"
 
 #include <algorithm>
+#include <new>
 #include <stdexcept>
 
 #include <cholmod.h>
@@ -47,6 +48,14 @@ cholmod_dense view(const Eigen::Ref<const Eigen::MatrixXd>& b) {
   return d;
 }
 
+/// CHOLMOD reports a failed allocation as a status; rsi's callers would
+/// read a failed factorization or solve as a property of the matrix (not
+/// positive definite, singular). Memory is no property of the matrix:
+/// throw what operator new throws.
+void throw_if_out_of_memory(const cholmod_common& c) {
+  if (c.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+}
+
 } // namespace
 
 CholmodFactor::CholmodFactor(Method method)
@@ -77,6 +86,7 @@ CholmodFactor::Status CholmodFactor::factorize(const Eigen::SparseMatrix<double>
     m_n = lower.rows();
     m_pattern_nonzeros = lower.nonZeros();
     m_cholmod->factor = cholmod_analyze(&a, c);
+    throw_if_out_of_memory(*c);
     if (m_cholmod->factor == nullptr || c->status < CHOLMOD_OK) {
       m_status = Status::failed;
       m_message = "CHOLMOD analysis failed (status " + std::to_string(c->status) + ")";
@@ -89,6 +99,7 @@ CholmodFactor::Status CholmodFactor::factorize(const Eigen::SparseMatrix<double>
   }
   m_message.clear();
   const int ok = cholmod_factorize(&a, m_cholmod->factor, c);
+  throw_if_out_of_memory(*c);
   const cholmod_factor& f = *m_cholmod->factor;
   if (ok && c->status == CHOLMOD_OK && f.minor == f.n) {
     m_status = Status::successful;
@@ -116,20 +127,22 @@ bool CholmodFactor::solve(System system, const Eigen::Ref<const Eigen::MatrixXd>
   const int first = system == System::a     ? CHOLMOD_A
                     : system == System::l_p ? CHOLMOD_P
                                             : CHOLMOD_Lt;
-  if (!cholmod_solve2(first, m_cholmod->factor, const_cast<cholmod_dense*>(&rhs), nullptr,
-                      &m_cholmod->x, nullptr, &m_cholmod->y, &m_cholmod->e, c) ||
-      c->status != CHOLMOD_OK)
-    return false;
+  const int solved =
+      cholmod_solve2(first, m_cholmod->factor, const_cast<cholmod_dense*>(&rhs), nullptr,
+                     &m_cholmod->x, nullptr, &m_cholmod->y, &m_cholmod->e, c);
+  throw_if_out_of_memory(*c);
+  if (!solved || c->status != CHOLMOD_OK) return false;
   if (system != System::a) {
     // cholmod_solve2 may reuse its result as workspace: copy it out first.
     const Eigen::MatrixXd half = Eigen::Map<const Eigen::MatrixXd>(
         static_cast<const double*>(m_cholmod->x->x), m_n, b.cols());
     const cholmod_dense rhs2 = view(half);
     const int second = system == System::l_p ? CHOLMOD_L : CHOLMOD_Pt;
-    if (!cholmod_solve2(second, m_cholmod->factor, const_cast<cholmod_dense*>(&rhs2), nullptr,
-                        &m_cholmod->x, nullptr, &m_cholmod->y, &m_cholmod->e, c) ||
-        c->status != CHOLMOD_OK)
-      return false;
+    const int solved2 =
+        cholmod_solve2(second, m_cholmod->factor, const_cast<cholmod_dense*>(&rhs2), nullptr,
+                       &m_cholmod->x, nullptr, &m_cholmod->y, &m_cholmod->e, c);
+    throw_if_out_of_memory(*c);
+    if (!solved2 || c->status != CHOLMOD_OK) return false;
   }
   x = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(m_cholmod->x->x), m_n, b.cols());
   return true;

@@ -14,8 +14,10 @@
 //
 // Failure is a status, never ignored: factorize() returns it, message()
 // says why (a pivot <= 0 at a column: A not positive definite to working
-// precision; CHOLMOD out of memory), and solve() returns false if the factor
-// is missing or cholmod_solve2 fails. CHOLMOD's own printing of warnings is
+// precision; another CHOLMOD failure), and solve() returns false if the
+// factor is missing or cholmod_solve2 fails. Out of memory is no status of
+// the matrix: CHOLMOD's CHOLMOD_OUT_OF_MEMORY throws std::bad_alloc, as
+// operator new would. CHOLMOD's own printing of warnings is
 // switched off (print level 1: errors only), the status carries them.
 //
 // Owns its cholmod_common, factor and solve workspace; not copyable; one

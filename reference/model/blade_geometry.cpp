@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <new>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -38,6 +39,7 @@ double solve_element_length(const BladedDiskSpec& spec) {
   gsl_function f{&tip_radius_error, &copy};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!solver) throw std::bad_alloc(); // GSL's allocation failed (its handler is off)
   // GSL reports failure by status (the CLI turns GSL's aborting default
   // handler off, cli/main.cpp); a failure here means the geometry is
   // degenerate (a non-finite tip radius), which the case must not ask for.

@@ -4,6 +4,7 @@
 
 #include "assembler.hpp"
 #include "frame_element.hpp"
+#include "part_definiteness.hpp"
 #include "ring_element.hpp"
 
 namespace rsi {
@@ -112,6 +113,9 @@ BladedDisk assemble_bladed_disk(const Case& c, HubSupport hub) {
   }
   bd.stiffness = assembler.stiffness();
   bd.mass = assembler.mass();
+  // The parts as a whole: K and M positive definite to working precision
+  // (a free hub leaves K its rigid rotation on purpose, for the tests).
+  if (hub == HubSupport::clamped) check_bladed_disk_definite(bd, c);
   return bd;
 }
 

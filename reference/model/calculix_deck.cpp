@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "coordinate_entries.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -181,7 +182,7 @@ CalculixDeck read_calculix_deck(const std::string& path) {
         nset->push_back(id);
     }
   }
-  deck.model_text = model.str();
+  deck.model_text = stream_text(model);
   std::sort(deck.nodes.begin(), deck.nodes.end(),
             [](const ComponentNode& a, const ComponentNode& b) { return a.id < b.id; });
   for (size_t k = 1; k < deck.nodes.size(); ++k)

@@ -10,6 +10,7 @@
 #include "child_process.hpp"
 #include "component.hpp"
 #include "coordinate_entries.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -27,7 +28,7 @@ std::uint64_t fnv1a(const std::string& text, std::uint64_t h = 14695981039346656
 std::string hex(std::uint64_t h) {
   std::ostringstream s;
   s << std::hex << h;
-  return s.str();
+  return stream_text(s);
 }
 
 /// Runs `ccx -i job` in `dir` with its output in dir/ccx.log; the exit status.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "assembler.hpp"
+#include "part_definiteness.hpp"
 #include "ring_element.hpp"
 
 namespace rsi {
@@ -48,7 +49,10 @@ Casing assemble_casing(const Case& c) {
   const int clamped =
       static_cast<int>(std::lround(c.casing.clamp_angle * c.casing.n_elements / (2.0 * M_PI))) %
       c.casing.n_elements;
-  return assemble_ring(c.material, c.casing.section, c.casing.radius, c.casing.n_elements, clamped);
+  Casing casing =
+      assemble_ring(c.material, c.casing.section, c.casing.radius, c.casing.n_elements, clamped);
+  check_casing_definite(casing, c); // K and M positive definite to working precision
+  return casing;
 }
 
 Eigen::VectorXd on_all_nodes(const Casing& casing, const Eigen::Ref<const Eigen::VectorXd>& x) {

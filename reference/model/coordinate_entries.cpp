@@ -32,10 +32,16 @@ void skip_spaces(const char*& p, const char* end) {
 std::string read_whole_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ImportError(path + ": cannot open (missing or unreadable)");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Appended piece by piece, not `stream << in.rdbuf()`: a string stream
+  // that cannot grow stops with no error (stream_text.hpp), and a matrix
+  // file cut short under a memory limit was then reported as a malformed
+  // line of the file. std::string::append throws std::bad_alloc.
+  std::string text;
+  char piece[1 << 16];
+  while (in.read(piece, sizeof piece) || in.gcount() > 0)
+    text.append(piece, static_cast<size_t>(in.gcount()));
   if (in.bad()) throw ImportError(path + ": cannot read");
-  return text.str();
+  return text;
 }
 
 bool next_line(std::string_view text, size_t& offset, std::string_view& line) {

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "child_process.hpp"
+#include "stream_text.hpp"
 
 namespace rsi {
 namespace {
@@ -336,7 +337,7 @@ std::string gmsh_blade_geo(const GmshBladeSpec& spec) {
     << "Mesh.Algorithm = 6;\nMesh.Algorithm3D = 1;\nMesh.RecombineAll = 0;\n"
     << "Mesh.HighOrderOptimize = 0;\nMesh.OptimizeNetgen = 0;\nMesh.SaveAll = 0;\n"
     << "General.NumThreads = 1;\n";
-  return g.str();
+  return stream_text(g);
 }
 
 namespace {

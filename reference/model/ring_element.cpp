@@ -1,6 +1,7 @@
 #include "ring_element.hpp"
 
 #include <memory>
+#include <new>
 
 #include <gsl/gsl_integration.h>
 
@@ -38,6 +39,7 @@ struct GaussTable {
 /// Sum over the Gauss points of w * f(xi) on [0, 1].
 template <typename F> Matrix8d integrate(const F& integrand) {
   const GaussTable gauss;
+  if (!gauss.table) throw std::bad_alloc(); // GSL's allocation failed (its handler is off)
   Matrix8d sum = Matrix8d::Zero();
   for (size_t i = 0; i < 4; ++i) {
     double xi = 0.0;

@@ -34,14 +34,18 @@
 // checked again once its estimate fell by the factor it missed by. A
 // residual r bounds the relative eigenvalue error by about |r|^2 / gap
 // (symmetric pencils): tolerance 1e-9 gives eigenvalues far below 1e-8
-// unless two are closer than 1e-10 relative.
+// unless two are closer than 1e-10 relative. A restart cycle whose checks
+// do not halve the worst residual (relative to tolerance + floor) of the
+// cycle before has stalled: not_converged at once, rather than after
+// max_restarts (modal_analysis then takes Lanczos on the same factor).
 //
 // The first block is T X with X random (fixed seed: reproducible), so every
 // basis vector is in the range of T: M may be singular (positive
 // semi-definite; its null space holds the infinite eigenvalues, never
 // wanted). K must be symmetric positive definite (a supported part; a
-// failed factorization, or CHOLMOD's rcond < n eps as in
-// reduced/bases/guyan, is the status stiffness_not_positive_definite),
+// failed factorization, or a lowest mode whose energy the factor does not
+// resolve, as in reduced/bases/guyan, is the status
+// stiffness_not_positive_definite),
 // M symmetric positive semi-definite; both in full (symmetric) storage.
 //
 // Parameters (BlockShiftInvertOptions): the block size b trades the solve's

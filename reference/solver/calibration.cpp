@@ -1,6 +1,7 @@
 #include "calibration.hpp"
 
 #include <memory>
+#include <new>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,7 @@ double calibrate_blade_thickness(const Case& c, double target_hz, double low, do
   gsl_function f{&family_error, &problem};
   std::unique_ptr<gsl_root_fsolver, decltype(&gsl_root_fsolver_free)> solver(
       gsl_root_fsolver_alloc(gsl_root_fsolver_brent), &gsl_root_fsolver_free);
+  if (!solver) throw std::bad_alloc(); // GSL's allocation failed (its handler is off)
   // GSL reports failure by status (the CLI turns its aborting default
   // handler off, cli/main.cpp): a non-finite frequency on the way.
   auto check = [&](int status) {

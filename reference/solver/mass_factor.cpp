@@ -1,6 +1,7 @@
 #include "mass_factor.hpp"
 
 #include <algorithm>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -88,9 +89,11 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   cholmod_sparse a = Eigen::viewAsCholmod(lower);
   a.stype = -1; // the lower triangle of a symmetric matrix
   c.factor = cholmod_analyze(&a, &c.common);
-  if (c.factor == nullptr || !cholmod_factorize(&a, c.factor, &c.common) ||
-      c.common.status != CHOLMOD_OK || c.factor->minor < c.factor->n || c.factor->is_ll ||
-      c.factor->is_super)
+  const bool factorized = c.factor != nullptr && cholmod_factorize(&a, c.factor, &c.common);
+  // Out of memory is no property of M: thrown as operator new would.
+  if (c.common.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
+  if (!factorized || c.common.status != CHOLMOD_OK || c.factor->minor < c.factor->n ||
+      c.factor->is_ll || c.factor->is_super)
     throw MassFactorError(
         "the mass matrix is not positive definite (CHOLMOD factorization failed, status " +
         std::to_string(c.common.status) + ")");

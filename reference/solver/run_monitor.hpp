@@ -89,10 +89,11 @@ struct StepState {
 /// summary's dt, omega_max and critical_dt.
 void check_time_step(double dt, double omega_max, bool force, RunSummary& summary);
 
-/// The cheap check before any eigensolver (issue 13, class 9): the Rayleigh
-/// quotient of a single dof, e_i^T K e_i / e_i^T M e_i = K_ii / M_ii, is at
-/// most omega_max^2, so dt >= 2 / sqrt(max_i K_ii / M_ii) is already above
-/// the stability limit. Throws StabilityError naming `part` then (unless
+/// The cheap check before any eigensolver (issue 13, class 9): every
+/// Rayleigh quotient x^T K x / x^T M x is at most omega_max^2, so dt >=
+/// 2 / sqrt(q) for the largest q found (one dof's, K_ii / M_ii, and the
+/// power method's; linalg/largest_eigenvalue_bound.hpp) is already above the
+/// stability limit. Throws StabilityError naming `part` then (unless
 /// forced); a step below this bound still needs check_time_step.
 void check_time_step_bound(double dt, const Eigen::SparseMatrix<double>& stiffness,
                            const Eigen::SparseMatrix<double>& mass, bool force,
