@@ -2,9 +2,9 @@
 # `rsi campaign` shows its progress and checks cheap limits before its runs
 # (issue 13, classes 9 and 8; cli/campaign_progress.hpp).
 #  1. Every finished run's line on stderr carries the runs done out of the
-#     total, in order 1..N, the time elapsed and, but for the last, the
-#     estimated time left (logs and pipes too: these lines were printed
-#     before, without the counts).
+#     total (a 1 ms campaign of 6 runs), in order 1..N, the time elapsed
+#     and, but for the last, the estimated time left (logs and pipes too:
+#     these lines were printed before, without the counts).
 #  2. On a terminal (util-linux `script` gives one; skipped without it) a
 #     campaign of more than a second redraws the live line
 #     `campaign: k/N runs done, P% (E s, about L s left)`.
@@ -33,8 +33,15 @@ variant() { # NAME KEY=JSON...
   /usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" \
     "$work/$name.json" "$@"
 }
-variant short time.duration=0.005
-variant tty time.duration=0.04 'campaign=[{"method": "guyan", "modes": [0]}, {"method": "cb", "modes": [10, 40, 88]}, {"method": "ccm", "modes": [10, 40, 88]}]'
+variant short time.duration=0.001 'campaign=[{"method": "guyan", "modes": [0]}, {"method": "cb", "modes": [0, 10]}, {"method": "ccm", "modes": [0, 10]}]'
+# The terminal's campaign must last a few seconds: 8 runs of 40 ms (80,000
+# steps) in Release, 2 runs of 5 ms under AddressSanitizer (about 10 times
+# slower; the Release campaign took 116 s there).
+if ldd "$rsi" | grep -q libasan; then
+  variant tty time.duration=0.005 'campaign=[{"method": "cb", "modes": [10]}]'
+else
+  variant tty time.duration=0.04 'campaign=[{"method": "guyan", "modes": [0]}, {"method": "cb", "modes": [10, 40, 88]}, {"method": "ccm", "modes": [10, 40, 88]}]'
+fi
 variant step-5e-06 time.duration=0.005 time.step=5e-6
 variant step-3e-06 time.duration=0.005 time.step=3e-6
 
@@ -59,18 +66,18 @@ print('\n'.join(str(m) for r in c['campaign'] for m in r['modes']))" "$work/shor
   fi
 fi
 
-# 2. On a terminal: the live line, drawn from the second second on: 8 runs
-# of 40 ms (80,000 steps) on one thread, 3 s in Release.
+# 2. On a terminal: the live line, drawn from the second second on (the
+# tty campaign on one thread: 3-4 s).
 if command -v script >/dev/null; then
   script -qec "'$rsi' campaign '$work/tty.json' --jobs 1 --no-report --out '$work/tty'" \
     /dev/null >"$work/tty.log" 2>&1
   status=$?
   if [ "$status" -ne 0 ]; then
     fail "campaign on a terminal: exit $status: $(tail -c 300 "$work/tty.log")"
-  elif ! grep -aq 'campaign: [0-9]/8 runs done, *[0-9.]*% ([0-9.]* s, about [0-9]* s left)' "$work/tty.log"; then
+  elif ! grep -aq 'campaign: [0-9]*/[0-9]* runs done, *[0-9.]*% ([0-9.]* s, about [0-9]* s left)' "$work/tty.log"; then
     fail "no live progress line on a terminal: $(tail -c 300 "$work/tty.log")"
   else
-    echo "ok   on a terminal: $(grep -ao 'campaign: [0-9]/8 runs done[^)]*)' "$work/tty.log" | tail -n 1)"
+    echo "ok   on a terminal: $(grep -ao 'campaign: [0-9]*/[0-9]* runs done[^)]*)' "$work/tty.log" | tail -n 1)"
   fi
 else
   echo "skipped: the terminal part (no util-linux script)"

@@ -49,11 +49,11 @@ interrupt simulate-term TERM 143 "$rsi" simulate "$work/long.json" --method full
 interrupt campaign-term TERM 143 "$rsi" campaign "$work/long.json" --no-report
 
 # During the report step (issue 13, class 6: the Python child kept writing
-# after rsi had exited): a 5 ms campaign with its report; SIGTERM once the
-# report script runs (a child of rsi). rsi exits 143, the child is stopped
-# (it is gone 1 s later), and --out is not created.
+# after rsi had exited): a 5 ms campaign (the reference and CB-10) with its
+# report; SIGTERM once the report script runs (a child of rsi). rsi exits
+# 143, the child is stopped (it is gone 1 s later), and --out is not created.
 /usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/short.json" \
-  time.duration=0.005
+  time.duration=0.005 'campaign=[{"method": "cb", "modes": [10]}]'
 if /usr/bin/python3 -c 'import matplotlib, scipy' 2>/dev/null; then
   out=$work/out-report
   "$rsi" campaign "$work/short.json" --out "$out" >"$work/log" 2>"$work/err" &

@@ -63,11 +63,13 @@ limited 200 simulate "$case_file" --out "$work/simulate"
 check "simulate over the file-size limit" "history.csv" $? "$work/simulate"
 [ -e "$work/simulate/history.csv" ] && fail "simulate: a history.csv was left"
 
-# 4. campaign: each run's streamed history (about 180 kB for 5 ms) over
-# 100 kB. A write that fails ends the campaign (exit 2), not one run: it
-# was a failed run each, the reference's an exit 3 "numerical failure",
-# and a disk full during one reduced run published the others.
-/usr/bin/python3 "$src/verification/case_variant.py" "$case_file" "$work/short.json" time.duration=0.005
+# 4. campaign (the reference and CB-10): each run's streamed history (about
+# 180 kB for 5 ms) over 100 kB. A write that fails ends the campaign (exit
+# 2), not one run: it was a failed run each, the reference's an exit 3
+# "numerical failure", and a disk full during one reduced run published the
+# others.
+/usr/bin/python3 "$src/verification/case_variant.py" "$case_file" "$work/short.json" time.duration=0.005 \
+  'campaign=[{"method": "cb", "modes": [10]}]'
 "$rsi" campaign "$work/short.json" --no-report --out "$work/campaign" >/dev/null 2>&1 ||
   fail "campaign without a limit failed"
 cp -r "$work/campaign" "$work/campaign.before"
