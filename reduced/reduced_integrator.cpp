@@ -490,6 +490,10 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
     }
     add_casing_correction(tip, f, -ft);
   }
+  apply_corrections();
+}
+
+void ReducedIntegrator::apply_corrections() {
   if (m_modal_disk) {
     m_eta_next += m_deta;
     form_boundary(m_eta_next, m_q_next);
@@ -632,13 +636,7 @@ StepReport ReducedIntegrator::step() {
                     (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
       }
     }
-    if (m_modal_disk) {
-      m_eta_next += m_deta;
-      form_boundary(m_eta_next, m_q_next);
-    } else {
-      m_q_next += m_dq;
-    }
-    apply_casing_correction();
+    apply_corrections();
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
   if (!m_force_zero) {

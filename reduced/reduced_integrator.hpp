@@ -245,6 +245,9 @@ private:
   void apply_casing_correction();
   /// Modal disk: m_q_next's boundary entries = Psi_B eta_next.
   void form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q);
+  /// Adds the contact corrections gathered in m_deta (modal disk) or m_dq,
+  /// and the casing's, to the predicted state.
+  void apply_corrections();
   /// Modal disk: m_deta += f Psi(position, :)^T (dt^2 in f).
   void add_disk_correction(int position, double f) { m_deta.noalias() += f * m_psi.row(position).transpose(); }
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
