@@ -66,7 +66,7 @@ void reduced_step(benchmark::State& state, const std::string& method) {
   const rsi::BladedDisk bd = rsi::assemble_bladed_disk(c);
   const rsi::Casing casing = rsi::assemble_casing(c);
   const rsi::ReducedBasis basis = rsi::reduce_bladed_disk(bd, method, 44);
-  const rsi::ReducedTipContact contact(bd, basis, casing, c);
+  const rsi::ReducedTipContact contact(basis, casing, c);
   rsi::ReducedIntegrator integrator(basis, casing, c.time.step, contact);
   const Eigen::VectorXd f = rsi::casing_forcing(casing, c.forcing);
   integrator.start(f);

@@ -3,23 +3,27 @@
 #include <cmath>
 #include <limits>
 
+#include "blade_geometry.hpp"
 #include "ring_element.hpp"
 
 namespace rsi {
 
-ReducedTipContact::ReducedTipContact(const BladedDisk& bladed_disk, const ReducedBasis& basis,
-                                     const Casing& casing, const Case& c)
+ReducedTipContact::ReducedTipContact(const ReducedBasis& basis, const Casing& casing,
+                                     const Case& c)
     : m_node_first(casing.node_first_dof)
     , m_tip_radius(c.bladed_disk.tip_radius)
     , m_casing_radius(casing.radius)
     , m_omega(c.operating_point.rotation_speed)
     , m_mu(c.operating_point.friction_coefficient)
     , m_law(c.operating_point.friction_law) {
-  // The partition's boundary is bladed_disk.boundary = (u_0, v_0, u_1, v_1, ...).
-  for (int k = 0; k < bladed_disk.n_sectors; ++k) {
+  // The partition's boundary is the bladed disk's (u_0, v_0, u_1, v_1, ...);
+  // only the tips' angles are read from the model, not its matrices.
+  const int n_sectors = c.bladed_disk.n_blades;
+  const double tip_angle = blade_geometry(c.bladed_disk).tip_angle;
+  for (int k = 0; k < n_sectors; ++k) {
     m_q_u.push_back(basis.boundary_position[2 * k]);
     m_q_v.push_back(basis.boundary_position[2 * k + 1]);
-    m_alpha0.push_back(2.0 * M_PI * k / bladed_disk.n_sectors + bladed_disk.geometry.tip_angle);
+    m_alpha0.push_back(2.0 * M_PI * k / n_sectors + tip_angle);
   }
 }
 

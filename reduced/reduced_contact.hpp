@@ -53,8 +53,7 @@ struct TipContact {
 
 class ReducedTipContact {
 public:
-  ReducedTipContact(const BladedDisk& bladed_disk, const ReducedBasis& basis, const Casing& casing,
-                    const Case& c);
+  ReducedTipContact(const ReducedBasis& basis, const Casing& casing, const Case& c);
 
   int n_tips() const { return static_cast<int>(m_q_u.size()); }
   double friction_coefficient() const { return m_mu; }

@@ -608,7 +608,7 @@ Eigen::MatrixXd default_case_w(double& dt) {
   const BladedDisk disk = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(disk, "cb", 10);
   const Casing casing = assemble_casing(c);
-  const ReducedTipContact contact(disk, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   std::vector<TipContact> tips;
   const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(basis.n_reduced());
   const Eigen::VectorXd c0 = Eigen::VectorXd::Zero(casing.n_dofs());

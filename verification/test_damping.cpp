@@ -273,7 +273,7 @@ TEST(Damping, ReducedModalDecayOfAFreeInterfaceMode) {
               "zeta_q / zeta - 1 = %.3e\n",
               omega, rho, omega_q / omega - 1.0, zeta_q / zeta - 1.0);
 
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   // The reduced model's own largest stable step, 0.9 of 2 / omega_max: omega dt = 0.05 on mode 1.
   const double dt = 0.9 * 2.0 / reduced_omega_max(basis);
   ReducedIntegrator integrator(basis, casing, dt, contact, damping);
@@ -341,7 +341,7 @@ TEST(Damping, ReducedCasingRayleighStepResponse) {
   const double zeta = 0.02; // half from alpha, half from beta
   ReducedDamping damping;
   damping.casing = {zeta * omega, zeta / omega};
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   ReducedIntegrator integrator(basis, casing, dt, contact, damping);
   // F = s M_c phi: static deflection s / omega^2 |phi|max = 1e-6 m, far
   // inside the 1 mm clearance (checked: no contact).

@@ -32,7 +32,7 @@ struct Trace {
 Trace run(const Case& c, const ReducedBasis& basis, const ReducedModes* modes, int steps) {
   const BladedDisk bd = assemble_bladed_disk(c);
   const Casing casing = assemble_casing(c);
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   ReducedIntegrator integrator(basis, casing, c.time.step, contact, ReducedDamping{}, nullptr,
                                modes);
   EXPECT_EQ(integrator.modal_bladed_disk(), modes != nullptr);

@@ -331,7 +331,7 @@ TEST(ReducedCoulomb, EachClosingStepAgainstADenseDerivation) {
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, "cb", 10);
   const Casing casing = assemble_casing(c);
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   ReducedDamping damping;
   damping.bladed_disk = modal_damping(basis, c.damping.modal_ratio);
   damping.casing = c.damping.rayleigh;
@@ -451,7 +451,7 @@ TEST(ReducedCoulomb, TangentialMultipliersOfTheRubbingRun) {
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, "cb", 10);
   const Casing casing = assemble_casing(c);
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   ReducedIntegrator integrator(basis, casing, c.time.step, contact);
   const Eigen::VectorXd forcing = casing_forcing(casing, c.forcing);
   const Eigen::VectorXd none = Eigen::VectorXd::Zero(casing.n_dofs());
@@ -492,7 +492,7 @@ TEST(ReducedCoulomb, NonFinitePredictionIsReportedWithItsStep) {
   const BladedDisk bd = assemble_bladed_disk(c);
   const ReducedBasis basis = reduce_bladed_disk(bd, "cb", 10);
   const Casing casing = assemble_casing(c);
-  const ReducedTipContact contact(bd, basis, casing, c);
+  const ReducedTipContact contact(basis, casing, c);
   ReducedIntegrator integrator(basis, casing, c.time.step, contact);
   Eigen::VectorXd q0 = Eigen::VectorXd::Zero(basis.n_reduced());
   q0(basis.boundary_position[0]) = std::numeric_limits<double>::quiet_NaN(); // tip 1's u
