@@ -83,10 +83,15 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     m_lambda_disk = disk_modes->omega_squared;
     m_boundary = basis.boundary_position;
     m_psi_boundary.resize(static_cast<Eigen::Index>(m_boundary.size()), r);
-    for (size_t i = 0; i < m_boundary.size(); ++i)
+    m_boundary_index.assign(static_cast<size_t>(r), -1);
+    for (size_t i = 0; i < m_boundary.size(); ++i) {
       m_psi_boundary.row(static_cast<Eigen::Index>(i)) = m_psi.row(m_boundary[i]);
+      m_boundary_index[static_cast<size_t>(m_boundary[i])] = static_cast<int>(i);
+    }
+    m_boundary_flexibility = m_psi_boundary * m_psi_boundary.transpose();
     m_eta = m_eta_prev = m_eta_next = m_deta = Eigen::VectorXd::Zero(r);
-    m_q_boundary = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
+    m_q_boundary = m_dq_boundary =
+        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
   }
 
   const int nc = casing.n_dofs();
@@ -161,14 +166,25 @@ double ReducedIntegrator::flops_per_step() const {
 }
 
 double ReducedIntegrator::energy() const {
-  const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
-  const Eigen::VectorXd kc_c = m_kc * m_c;
-  const double casing = 0.5 * vc.dot(m_mc * vc) + 0.5 * m_c_prev.dot(kc_c);
-  if (m_modal_disk)
-    return 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
-           0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta)) + casing;
+  return casing_energy() + (m_modal_disk ? 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
+                                               0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta))
+                                         : disk_energy());
+}
+
+double ReducedIntegrator::disk_energy() const {
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
-  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q) + casing;
+  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q);
+}
+
+double ReducedIntegrator::casing_energy() const {
+  // Modal casing: c = Phi p with Phi^T M_c Phi = I and Phi^T K_c Phi =
+  // diag(omega^2) (casing_basis.hpp), so the same E_{n-1/2} in O(N_c), and
+  // the one of the equations the integrator advances (diag(omega^2) p).
+  if (m_modal_casing)
+    return 0.5 * ((m_p - m_p_prev) / m_dt).squaredNorm() +
+           0.5 * m_p_prev.dot(m_omega_squared.cwiseProduct(m_p));
+  const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
+  return 0.5 * vc.dot(m_mc * vc) + 0.5 * m_c_prev.dot(m_kc * m_c);
 }
 
 void ReducedIntegrator::tip_displacement(Eigen::VectorXd& out) const {
@@ -472,10 +488,7 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
 
 void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
   const double dt2 = m_dt * m_dt;
-  m_dq.setZero();
-  m_dc.setZero();
-  if (m_modal_casing) m_dp.setZero();
-  if (m_modal_disk) m_deta.setZero();
+  clear_corrections();
   for (int j = 0; j < m_lambda.size(); ++j) {
     if (m_lambda(j) == 0.0 && m_lambda_t(j) == 0.0) continue;
     const TipContact& tip = tips[j];
@@ -493,10 +506,27 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
   apply_corrections();
 }
 
+void ReducedIntegrator::clear_corrections() {
+  m_dq.setZero();
+  m_dc.setZero();
+  if (m_modal_casing) {
+    m_dp.setZero();
+    m_casing_terms.clear();
+  }
+  if (m_modal_disk) {
+    m_deta.setZero();
+    m_dq_boundary.setZero();
+  }
+}
+
 void ReducedIntegrator::apply_corrections() {
   if (m_modal_disk) {
+    // q_B = Psi_B (eta~ + d eta) = q~_B + Psi_B Psi_B^T (sum of f e): the
+    // predictor's q~_B plus the corrections' columns (add_disk_correction).
     m_eta_next += m_deta;
-    form_boundary(m_eta_next, m_q_next);
+    m_q_boundary += m_dq_boundary;
+    for (size_t i = 0; i < m_boundary.size(); ++i)
+      m_q_next(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
   } else {
     m_q_next += m_dq;
   }
@@ -511,14 +541,25 @@ void ReducedIntegrator::add_casing_correction(const TipContact& tip, double f_u,
   for (int b = 0; b < 4; ++b) {
     if (tip.c_u[b] < 0) continue;
     sum += (f_u * tip.shape[b]) * columns.col(tip.c_u[b]);
-    if (f_v != 0.0) sum += (f_v * tip.shape[b]) * columns.col(tip.c_v[b]);
+    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_u[b], f_u * tip.shape[b]);
+    if (f_v == 0.0) continue;
+    sum += (f_v * tip.shape[b]) * columns.col(tip.c_v[b]);
+    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_v[b], f_v * tip.shape[b]);
   }
 }
 
 void ReducedIntegrator::apply_casing_correction() {
   if (m_modal_casing) {
+    // c = Phi (p~ + dp) = c~ + sum of f Phi diag(1/a) Phi^T e_dof: with fewer
+    // terms than modes the columns of m_mc_inverse (n_c each) cost less than
+    // Phi p again (n_c N_c); the same c up to round-off.
     m_p_next += m_dp;
-    m_c_next.noalias() = m_phi * m_p_next;
+    if (static_cast<Eigen::Index>(m_casing_terms.size()) < m_p_next.size()) {
+      for (const auto& [dof, f] : m_casing_terms)
+        m_c_next.noalias() += f * m_mc_inverse.col(dof);
+    } else {
+      m_c_next.noalias() = m_phi * m_p_next;
+    }
   } else {
     m_c_next += m_dc;
   }
@@ -613,10 +654,7 @@ StepReport ReducedIntegrator::step() {
   if (coulomb) {
     if (corrected) correct_coulomb(m_predicted);
   } else if (corrected) {
-    m_dq.setZero();
-    m_dc.setZero();
-    if (m_modal_casing) m_dp.setZero();
-    if (m_modal_disk) m_deta.setZero();
+    clear_corrections();
     for (int j = 0; j < m_lambda.size(); ++j) {
       if (m_lambda(j) == 0.0) continue;
       const TipContact& tip = m_predicted[j];

@@ -105,6 +105,7 @@
 // mu = 0 a closed tip is classified slip (lambda_t = 0).
 
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -220,6 +221,10 @@ public:
   double casing_flops_per_step() const;
 
 private:
+  /// E_{n-1/2} of the reduced bladed disk in physical coordinates q.
+  double disk_energy() const;
+  /// E_{n-1/2} of the casing (modal coordinates when reduced).
+  double casing_energy() const;
   double flexibility(const TipContact& i, const TipContact& j) const;
   /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
   /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
@@ -249,7 +254,15 @@ private:
   /// and the casing's, to the predicted state.
   void apply_corrections();
   /// Modal disk: m_deta += f Psi(position, :)^T (dt^2 in f).
-  void add_disk_correction(int position, double f) { m_deta.noalias() += f * m_psi.row(position).transpose(); }
+  /// The correction f e_position in q, as eta += f Psi^T e_position and, for
+  /// the tips' entries of q, q_B += f Psi_B Psi_B^T e_position (44 entries a
+  /// term instead of Psi_B times the whole corrected eta).
+  void add_disk_correction(int position, double f) {
+    m_deta.noalias() += f * m_psi.row(position).transpose();
+    m_dq_boundary.noalias() += f * m_boundary_flexibility.col(m_boundary_index[position]);
+  }
+  /// Zeroes the corrections of a step (disk and casing, physical and modal).
+  void clear_corrections();
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
   /// over both parts, with m_q_next, m_c_next = x_{n+1}.
   double step_damping_work();
@@ -279,7 +292,9 @@ private:
   std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q (modal disk)
   std::vector<int> m_tip_position; ///< positions of the boundary (tip) entries in q
   Eigen::MatrixXd m_psi_boundary; ///< Psi_B: the rows of Psi at m_boundary
-  Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary;
+  std::vector<int> m_boundary_index; ///< q position -> index in m_boundary (-1: not a tip's)
+  Eigen::MatrixXd m_boundary_flexibility; ///< Psi_B Psi_B^T
+  Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary, m_dq_boundary;
   // Modal casing (casing_basis): c = Phi p.
   bool m_modal_casing = false;
   Eigen::MatrixXd m_phi;             ///< Phi, n_c x m
@@ -289,6 +304,7 @@ private:
   Eigen::VectorXd m_modal_a_inverse; ///< 1 / a_i
   Eigen::VectorXd m_force_modal;     ///< Phi^T F
   Eigen::VectorXd m_p, m_p_prev, m_p_next, m_dp;
+  std::vector<std::pair<int, double>> m_casing_terms; ///< (casing dof, f) of the step's correction
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
