@@ -125,6 +125,7 @@ std::string summary_json(const RunSummary& s) {
   }
   j["wall_seconds"] = s.wall_seconds;
   j["integration_seconds"] = s.integration_seconds;
+  j["output_seconds"] = s.output_seconds;
   j["max_penetration"] = s.max_penetration;
   j["min_lambda"] = s.min_lambda;
   j["max_lambda"] = s.max_lambda;

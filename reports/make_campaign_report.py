@@ -237,7 +237,10 @@ L = ["# Method comparison: reduced models against the full reference", "",
      f"Reference (full FE): {rs['dofs']} dofs, {rs['steps']} steps of {rs['dt']:.1e} s, "
      f"wall {rs['wall_seconds']:.3f} s ({rs['integration_seconds']:.3f} s in the time loop). "
      "All runs of the tables were measured in one campaign (`--jobs` of them at a time), and every speedup "
-     "is a ratio of two wall times of this one campaign.", "",
+     "is a ratio of two wall times of this one campaign. A run's wall time is the solver's: the time its "
+     "history sink spent formatting and writing `history.csv` is measured apart (`output_seconds` in "
+     "summary.json; every run writes the same output rows) and not counted"
+     + (f" (the reference's: {rs['output_seconds'] * 1e3:.1f} ms)" if 'output_seconds' in rs else "") + ".", "",
      f"{len(every_reduced)} reduced runs: {len(reduced)} on the paper's axes (the first round: lowest-frequency "
      f"modes, full casing, the case's time step), {len(every_reduced) - len(reduced)} on the second round's "
      "(mode selection, reduced casing, own time step). The paper's comparison uses the first round only.", ""]

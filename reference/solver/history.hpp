@@ -106,8 +106,13 @@ struct RunSummary {
   double step_safety = 0.0;             ///< of the "own" rule (0 otherwise)
   std::string selection;                ///< mode selection of a reduced run ("" for full)
   int modes_kept = 0;                   ///< the reduced basis's kept modes (0 for full)
-  double wall_seconds = 0.0;            ///< whole run: assembly, omega_max, integration
-  double integration_seconds = 0.0;
+  /// Whole run (assembly, omega_max, integration, monitoring) without
+  /// output_seconds: the solver's time, which speedups compare.
+  double wall_seconds = 0.0;
+  double integration_seconds = 0.0; ///< the time loop, without output_seconds
+  /// Spent in RunOptions::history_sink (formatting and writing history rows,
+  /// the same rows for every run of a campaign); 0 when rows stay in memory.
+  double output_seconds = 0.0;
   double max_penetration = 0.0;       ///< [m]
   double min_lambda = 0.0;            ///< [N]
   double max_lambda = 0.0;            ///< [N]

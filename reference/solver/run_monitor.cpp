@@ -2,6 +2,7 @@
 
 #include "largest_eigenvalue_bound.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <algorithm>
 #include <sstream>
@@ -63,9 +64,12 @@ void RunMonitor::add_row(const StepState& state, double energy) {
                        energy,              state.external_work, state.contact_work,
                        state.damping_work,  state.lambda_tangential,
                        tips ? &m_tips : nullptr};
-  if (m_options.history_sink)
+  if (m_options.history_sink) {
+    const auto start = std::chrono::steady_clock::now();
     m_options.history_sink(row);
-  else
+    m_output_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  } else
     m_result.history.append(row);
   ++m_n_rows;
   m_last_external_work = state.external_work;
@@ -166,8 +170,9 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
 
 void RunMonitor::finish(double integration_seconds, double wall_seconds) {
   RunSummary& s = m_result.summary;
-  s.integration_seconds = integration_seconds;
-  s.wall_seconds = wall_seconds;
+  s.output_seconds = m_output_seconds;
+  s.integration_seconds = integration_seconds - m_output_seconds;
+  s.wall_seconds = wall_seconds - m_output_seconds;
   if (m_n_rows > 0) {
     s.final_external_work = m_last_external_work;
     s.final_contact_work = m_last_contact_work;

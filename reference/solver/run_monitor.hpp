@@ -115,7 +115,8 @@ public:
   bool needs_casing(const StepReport& report) const {
     return m_result.summary.first_contact_step < 0 && report.n_active > 0;
   }
-  /// Closes the summary.
+  /// Closes the summary: the two clocks as measured by the run, from which
+  /// the time spent in the history sink is taken out (RunSummary::output_seconds).
   void finish(double integration_seconds, double wall_seconds);
   /// History rows produced so far (kept or streamed).
   int n_rows() const { return m_n_rows; }
@@ -132,6 +133,7 @@ private:
   double m_largest_external_work = 0.0;
   bool m_in_contact = false;
   int m_n_rows = 0;
+  double m_output_seconds = 0.0; ///< inside the history sink
   double m_last_external_work = 0.0; ///< of the last row
   double m_last_contact_work = 0.0;  ///< of the last row
   double m_last_damping_work = 0.0;  ///< of the last row
