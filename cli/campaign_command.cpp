@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bladed_disk.hpp"
+#include "basis_memory.hpp"
 #include "campaign_progress.hpp"
 #include "casing_memory.hpp"
 #include "casing.hpp"
@@ -80,7 +81,7 @@ int smallest_reaching(const std::vector<CampaignResult>& runs, const std::vector
 } // namespace
 
 int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs,
-                             const std::string& where) {
+                             const std::string& where, int runs_at_once) {
   // Mode counts against the model before any run (the case loader only
   // knows [0, 100000]): cb keeps at most the interior dofs, ccm at most the
   // dofs minus the boundary dofs (reduced/craig_bampton, craig_chang_martinez).
@@ -104,6 +105,9 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
                        (r.method == "guyan" ? std::string("[0, 0] for guyan")
                                             : "[0, " + std::to_string(most) + "] for " +
                                                   r.method + " (dofs minus boundary dofs)"));
+    // Its dense basis, as many at once as threads build them (basis_memory.hpp).
+    check_dense_basis_fits(where + ": " + r.name(), bd.n_dofs(),
+                           static_cast<int>(bd.boundary.size()), r.modes, runs_at_once);
   }
   return bd.n_dofs();
 }
@@ -121,7 +125,9 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const int jobs = options.jobs == 0 ? 2 : options.jobs;
   if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
-  const int disk_dofs = check_runs_against_model(c, c.campaign, c.source + ": key 'campaign'");
+  const int disk_dofs = check_runs_against_model(
+      c, c.campaign, c.source + ": key 'campaign'",
+      std::min<int>(jobs, static_cast<int>(c.campaign.size())));
   {
     // The step against one dof's Rayleigh quotient of each part (a lower
     // bound of omega_max, run_monitor.hpp), before any run: the runs would
@@ -167,6 +173,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       ReducedRunOptions run_options;
       run_options.step = r.run.step;
       run_options.step_key = c.source + ": campaign run " + run_name(r.run) + ": time_step";
+      run_options.modes_key = "campaign run " + run_name(r.run) + ": modes";
       run_options.casing_modes = r.run.casing_modes;
       run_options.selection = r.run.selection;
       run_options.runs_at_once = std::min<int>(jobs, static_cast<int>(c.campaign.size()));

@@ -129,11 +129,12 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
 
 /// Checks a run list against the model before any run: mode counts (cb:
 /// at most the interior dofs, ccm: the dofs minus the boundary's, guyan: 0),
-/// casing modes (at most the casing's dofs) and given steps (dividing the
-/// output interval). UsageError or CaseError prefixed by `where`. Returns
-/// the bladed disk's dofs.
+/// casing modes (at most the casing's dofs), given steps (dividing the
+/// output interval) and each dense basis against the memory, `runs_at_once`
+/// of them (basis_memory.hpp). UsageError or CaseError prefixed by `where`.
+/// Returns the bladed disk's dofs.
 int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs,
-                             const std::string& where);
+                             const std::string& where, int runs_at_once);
 
 /// rsi sweep: the case's runs over its rotation speeds, alone or over MPI ranks.
 int run_sweep(const SweepOptions& options, StagedOutput& output);

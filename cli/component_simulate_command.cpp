@@ -22,6 +22,10 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
                      "response dof of its 'rubbing.response')");
   if (options.method == "full" && options.modes != 0)
     throw UsageError("--modes: only for a reduced method; drop it");
+  // On a terminal: loading and the bases as a stage line, then the steps.
+  const std::function<void(double)> terminal = terminal_progress(options.method);
+  TerminalStage preparing("preparing the run (the component, " + options.method +
+                          (options.method == "full" ? " model, omega_max)" : " basis, omega_max)"));
   const RubbingModel model = load_rubbing_model(c, options.load);
   const std::string dir = output.open(options.out, "--out", simulate_output_set());
   const int nc = static_cast<int>(model.contact_nodes.size());
@@ -34,9 +38,13 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
   run.modes = options.modes;
   run.force = options.force;
   run.checkpoint = throw_if_interrupted;
-  run.progress = terminal_progress(options.method);
+  run.progress = [&preparing, &terminal](double fraction) {
+    preparing.done();
+    if (terminal) terminal(fraction);
+  };
   const RubbingRun result = run_rubbing(model, run, sink);
-  finish_terminal_progress(run.progress);
+  preparing.done();
+  finish_terminal_progress(terminal);
   throw_if_interrupted();
   history_file.commit();
   write_text_file(dir + "/summary.json", summary_json(result.summary));

@@ -12,6 +12,7 @@
 #include "output_files.hpp"
 #include "staged_output.hpp"
 #include "stream_text.hpp"
+#include "terminal_progress.hpp"
 
 namespace rsi {
 namespace {
@@ -46,10 +47,13 @@ ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
 
 int run_modes(const ModesOptions& options, StagedOutput& output) {
   const auto start = std::chrono::steady_clock::now();
+  TerminalStage stage("modes: loading " + options.case_path + " and solving for " +
+                      std::to_string(options.count) + " modes");
   const ComponentInput input = load_component_input(options.case_path, options.part, options.load);
   const auto loaded = std::chrono::steady_clock::now();
   const ModesTable table = table_of(input, options.count);
   const auto solved = std::chrono::steady_clock::now();
+  stage.done();
   const Modes& modes = table.modes;
   const int n = table.n_dofs;
   const std::string dir = output.open(options.out, "--out", modes_output_set());

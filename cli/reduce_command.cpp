@@ -12,6 +12,7 @@
 #include "reduced_run.hpp"
 #include "reduction.hpp"
 #include "staged_output.hpp"
+#include "terminal_progress.hpp"
 
 namespace rsi {
 
@@ -20,6 +21,8 @@ int run_reduce(const ReduceOptions& options, StagedOutput& output) {
       options.method != "macneal")
     throw UsageError("--method: must be cb, ccm, guyan or macneal, got '" + options.method + "'");
   const auto start = std::chrono::steady_clock::now();
+  TerminalStage stage("reduce: loading " + options.case_path + " and building the " +
+                      options.method + " basis");
   const ComponentInput input = load_component_input(options.case_path, "", options.load);
   const double load_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -31,6 +34,7 @@ int run_reduce(const ReduceOptions& options, StagedOutput& output) {
       reduce(c.stiffness, c.mass, c.boundary, options.method, options.modes);
   // With a massless boundary (MacNeal) the boundary is condensed first (critical_step.hpp).
   const double omega_max = reduced_omega_max(basis);
+  stage.done();
   const std::string dir = output.open(options.out, "--out", reduce_output_set());
   write_symmetric_matrix_market(dir + "/K.mtx", basis.stiffness.sparseView());
   write_symmetric_matrix_market(dir + "/M.mtx", basis.mass.sparseView());

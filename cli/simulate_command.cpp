@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unistd.h>
@@ -93,7 +94,15 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   const std::string dir = output.open(options.out, "--out", simulate_output_set());
   ReducedRunOptions run;
   run.run.force = options.force;
-  run.run.progress = terminal_progress();
+  // On a terminal: the preparation (assembly, omega_max, a basis: minutes of
+  // Lanczos on a large casing) as a stage line, then the steps' progress.
+  const std::function<void(double)> terminal = terminal_progress();
+  TerminalStage preparing(std::string("preparing the run (assembly, omega_max") +
+                          (full ? ")" : ", the " + options.method + " basis)"));
+  run.run.progress = [&preparing, &terminal](double fraction) {
+    preparing.done();
+    if (terminal) terminal(fraction);
+  };
   run.run.checkpoint = throw_if_interrupted;
   run.full_field = options.full_field;
   run.step = parse_step_option(options.time_step, options.step_safety);
@@ -130,7 +139,8 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
 
   const RunResult result =
       full ? run_reference(c, run.run) : run_reduced(c, options.method, options.modes, run).run;
-  finish_terminal_progress(run.run.progress);
+  preparing.done();
+  finish_terminal_progress(terminal);
   if (history_rows == 0) history_file.append(history_csv_header(0)); // as history_csv(History{})
   history_file.commit();
   write_text_file(dir + "/summary.json", summary_json(result.summary));

@@ -223,7 +223,8 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
   const int jobs = options.jobs == 0 ? (mpi.size() > 1 ? 1 : 2) : options.jobs;
   if (jobs < 1 || jobs > 64)
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
-  const int disk_dofs = check_runs_against_model(c, c.sweep.runs, c.source + ": key 'sweep.runs'");
+  const int disk_dofs =
+      check_runs_against_model(c, c.sweep.runs, c.source + ": key 'sweep.runs'", jobs);
   // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
   if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
                   [](const CampaignRun& r) { return r.method != "full"; }))

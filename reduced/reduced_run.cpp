@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "basis_memory.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
 #include "casing_forcing.hpp"
@@ -16,7 +17,16 @@
 #include "run_step.hpp"
 
 namespace rsi {
-namespace {} // namespace
+namespace {
+
+ReducedBasis reduce_selected(const Case& c, const BladedDisk& bd, const std::string& method,
+                             int modes, const std::string& selection) {
+  if (selection == "lowest") return reduce_bladed_disk(bd, method, modes);
+  return reduce_bladed_disk(bd, method, modes, parse_mode_selection(selection),
+                            selection_context(bd, c.forcing.nodal_diameter));
+}
+
+} // namespace
 
 ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes,
                              const ReducedRunOptions& options) {
@@ -27,15 +37,15 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
     check_time_step_bound(dt, casing.stiffness, casing.mass, options.run.force, "casing");
   }
   check_dense_casing_fits(c, casing.n_dofs(), options.runs_at_once);
-  return run_reduced(c, build_reduced_basis(c, method, modes, options.selection), options);
+  const BladedDisk bd = assemble_bladed_disk(c);
+  check_dense_basis_fits(c.source + ": " + options.modes_key, bd.n_dofs(),
+                         static_cast<int>(bd.boundary.size()), modes, options.runs_at_once);
+  return run_reduced(c, reduce_selected(c, bd, method, modes, options.selection), options);
 }
 
 ReducedBasis build_reduced_basis(const Case& c, const std::string& method, int modes,
                                  const std::string& selection) {
-  const BladedDisk bd = assemble_bladed_disk(c);
-  if (selection == "lowest") return reduce_bladed_disk(bd, method, modes);
-  return reduce_bladed_disk(bd, method, modes, parse_mode_selection(selection),
-                            selection_context(bd, c.forcing.nodal_diameter));
+  return reduce_selected(c, assemble_bladed_disk(c), method, modes, selection);
 }
 
 ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,

@@ -89,6 +89,7 @@ variant("unstable", lambda d: d["time"].update(step=3e-6))
 variant("largest-casing", lambda d: d["casing"].update(n_elements=100000))
 variant("fine-casing", lambda d: d["casing"].update(n_elements=4000))
 variant("casing-2000", lambda d: (d["casing"].update(n_elements=2000), d["time"].update(step=5e-9, duration=5e-6), d.update(campaign=[{"method": "cb", "modes": [10, 20]}])))
+variant("wide-disk", lambda d: (d["bladed_disk"].update(n_blades=200, n_blade_elements=72), d["time"].update(step=1e-7, duration=1e-5), d.update(campaign=[{"method": "cb", "modes": [1000]}])))
 variant("largest-resolved-casing", lambda d: (d["casing"].update(n_elements=10000), d["time"].update(step=5e-10, duration=5e-9)))
 variant("thin-blades", lambda d: d["bladed_disk"]["blade_section"].update(thickness=1e-8))
 variant("thin-casing", lambda d: d["casing"]["section"].update(thickness=1e-7))
@@ -231,6 +232,15 @@ else
   }
   expect 2 "key 'casing.n_elements' (2000): a reduced run keeps the casing's inverse mass dense, 8 n_c^2 = 0.511 GB for its 7996 dofs, more than the 0.41 GB" -- limited_v 400000 "$rsi" simulate "$work/casing-2000.json" --method cb --modes 10 --out "$work/out"
   expect 2 "2 runs at once: 1.02 GB, more than the 0.922 GB this process may use (physical memory, ulimit -v, ulimit -d); use at most 1898 casing elements or fewer --jobs" -- limited_v 900000 "$rsi" campaign "$work/casing-2000.json" --no-report --out "$work/out"
+  # The bladed disk's dense basis (reduced/basis_memory.hpp): 200 blades of
+  # 72 elements, 44,000 dofs and 400 boundary dofs. A reduced run holds T
+  # twice at least, 16 n r bytes: CB-400 (r = 800) 0.563 GB against 0.41 GB,
+  # most modes floor(0.4096e9 / (16 * 44000)) - 400 = 181; the campaign's
+  # CB-1000 (r = 1400) 0.986 GB against 0.922 GB, most 1309 - 400 = 909.
+  # Refused before the basis is built (it was exit 1 "out of memory" after
+  # the fixed-interface modes).
+  expect 2 "--modes: 400 modes: the reduced basis T is dense, 44000 x 800 (400 boundary dofs and the modes), and a reduced run holds it twice, 16 n r = 0.563 GB, more than the 0.41 GB this process may use (physical memory, ulimit -v, ulimit -d); use at most 181 modes" -- limited_v 400000 "$rsi" simulate "$work/wide-disk.json" --method cb --modes 400 --out "$work/out"
+  expect 2 "key 'campaign': cb-1000: 1000 modes: the reduced basis T is dense, 44000 x 1400 (400 boundary dofs and the modes), and a reduced run holds it twice, 16 n r = 0.986 GB, more than the 0.922 GB this process may use (physical memory, ulimit -v, ulimit -d); use at most 909 modes" -- limited_v 900000 "$rsi" campaign "$work/wide-disk.json" --no-report --out "$work/out"
 fi
 # The model as a whole (issue 13, class 7): K positive definite to working
 # precision (reference/model/part_definiteness). The largest casing, 100000
