@@ -32,6 +32,7 @@
 #include "report_script.hpp"
 #include "run_outputs.hpp"
 #include "run_step.hpp"
+#include "scratch_series.hpp"
 #include "staged_output.hpp"
 #include "worker_threads.hpp"
 
@@ -42,10 +43,33 @@ struct CampaignResult {
   CampaignRun run;
   RunResult result; ///< its history streamed to `history`, not kept
   std::unique_ptr<StreamedTextFile> history; ///< runs/<name>/history.csv, committed at the end
-  std::vector<double> blade1_gap;            ///< for the error norms
+  std::unique_ptr<ScratchSeries> blade1_gap; ///< for the error norms, on disk (scratch_series.hpp)
   std::string error; ///< why the run could not be made (bad mode count, numerical failure)
   int modes_kept = 0; ///< the basis's modes (a selection keeps whole units, rounding down)
 };
+
+/// e2 and e_inf of two gap series on disk, read back in chunks.
+GapErrors series_gap_errors(ScratchSeries& reduced, ScratchSeries& reference) {
+  if (reduced.size() != reference.size())
+    throw std::invalid_argument("blade1_gap_errors: the histories have " +
+                                std::to_string(reduced.size()) + " and " +
+                                std::to_string(reference.size()) + " rows");
+  reduced.rewind();
+  reference.rewind();
+  constexpr std::size_t chunk = 8192;
+  std::vector<double> a(chunk), b(chunk);
+  GapErrorSums sums;
+  const bool itself = &reduced == &reference; // the reference's own row
+  for (std::size_t n; (n = reduced.read(a.data(), chunk)) > 0;) {
+    if (itself)
+      b = a;
+    else if (reference.read(b.data(), n) != n)
+      throw OutputError("cannot read back the campaign's gap series from its temporary file");
+    for (std::size_t i = 0; i < n; ++i)
+      sums.add(a[i], b[i]);
+  }
+  return sums.errors();
+}
 
 /// Thrown at a run's checkpoint once another worker has ended the campaign
 /// (out of memory, a failed write, the reference's bad step): the run is
@@ -155,13 +179,14 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   CampaignProgress progress(static_cast<int>(runs.size()), ::isatty(STDERR_FILENO) != 0);
   // Each history is streamed to its file as it is produced (a temporary
   // file, committed only when every run is done: a failed campaign writes
-  // none), keeping only the blade-1 gap in memory: a campaign's memory no
-  // longer grows with the histories (issue 13: hundreds of MB at
-  // output_every 1).
+  // none), and the blade-1 gap for the error norms to a scratch file: a
+  // campaign's memory does not grow with the histories (issue 13: hundreds
+  // of MB at output_every 1).
   for (CampaignResult& r : runs) {
     const std::string dir = stage + "/runs/" + run_name(r.run);
     output.make(dir);
     r.history = std::make_unique<StreamedTextFile>(dir + "/history.csv");
+    r.blade1_gap = std::make_unique<ScratchSeries>();
     // The 2D Coulomb law adds one tangential multiplier a tip (run_outputs.hpp).
     const int n_tangents = c.operating_point.friction_law == FrictionLaw::coulomb ? 1 : 0;
     r.history->append(history_csv_header(c.bladed_disk.n_blades, n_tangents));
@@ -190,7 +215,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
         row.clear();
         append_history_csv_row(row, h);
         r.history->append(row);
-        r.blade1_gap.push_back(h.gap(0));
+        r.blade1_gap->append(h.gap(0));
       };
       try {
         if (r.run.method == "full") {
@@ -247,7 +272,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       std::filesystem::remove(dir, ignored); // empty
       continue;
     }
-    errors[i] = gap_errors(r.blade1_gap, runs[0].blade1_gap);
+    errors[i] = series_gap_errors(*r.blade1_gap, *runs[0].blade1_gap);
     r.history->commit();
     write_text_file(dir + "/summary.json", summary_json(r.result.summary));
     const RunSummary& rs = r.result.summary;

@@ -19,6 +19,23 @@ struct GapErrors {
   double e_inf = 0.0;
 };
 
+/// The sums behind e2 and e_inf, taken row by row in order (a series read
+/// in chunks gives the same bits as a whole one).
+class GapErrorSums {
+public:
+  void add(double reduced, double reference) {
+    const double d = reduced - reference;
+    m_diff2 += d * d;
+    m_ref2 += reference * reference;
+    m_diff_max = std::max(m_diff_max, std::abs(d));
+    m_ref_max = std::max(m_ref_max, std::abs(reference));
+  }
+  GapErrors errors() const { return {std::sqrt(m_diff2 / m_ref2), m_diff_max / m_ref_max}; }
+
+private:
+  double m_diff2 = 0.0, m_ref2 = 0.0, m_diff_max = 0.0, m_ref_max = 0.0;
+};
+
 /// e2 and e_inf of the blade-1 gap series `reduced` against `reference`
 /// (one entry per history row). Throws std::invalid_argument if their
 /// lengths differ.
@@ -28,15 +45,10 @@ inline GapErrors gap_errors(const std::vector<double>& reduced,
     throw std::invalid_argument("blade1_gap_errors: the histories have " +
                                 std::to_string(reduced.size()) + " and " +
                                 std::to_string(reference.size()) + " rows");
-  double diff2 = 0.0, ref2 = 0.0, diff_max = 0.0, ref_max = 0.0;
-  for (size_t i = 0; i < reference.size(); ++i) {
-    const double d = reduced[i] - reference[i];
-    diff2 += d * d;
-    ref2 += reference[i] * reference[i];
-    diff_max = std::max(diff_max, std::abs(d));
-    ref_max = std::max(ref_max, std::abs(reference[i]));
-  }
-  return {std::sqrt(diff2 / ref2), diff_max / ref_max};
+  GapErrorSums sums;
+  for (size_t i = 0; i < reference.size(); ++i)
+    sums.add(reduced[i], reference[i]);
+  return sums.errors();
 }
 
 /// The blade-1 gap of every row of a history.
