@@ -121,6 +121,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   ro.steps = n_samples * run.steps_per_sample;
   ro.output_every = run.steps_per_sample * setup.output_every;
   ro.energy_every = ro.output_every;
+  ro.checkpoint = options.checkpoint;
   ComponentHistory h;
   const ComponentRunSummary c =
       run_component(integrator, basis.transformation.row(model.response_dof), ro, h);

@@ -61,6 +61,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
   for (int n = 1; n <= options.steps; ++n) {
+    if (n % 1000 == 0 && options.checkpoint) options.checkpoint();
     StepReport r;
     try {
       r = integrator.step();

@@ -18,6 +18,7 @@
 // scale). A run that breaks a monitor stops at that step, completed =
 // false, status says which and when.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,10 +57,11 @@ struct ComponentRunSummary {
 };
 
 struct ComponentRunOptions {
-  int steps = 0;                   ///< >= 1
-  int output_every = 1;            ///< >= 1
-  int energy_every = 1;            ///< >= 1; rows between energy checks carry energy NaN
-  double balance_tolerance = 1e-8; ///< relative, in (0, 1)
+  int steps = 0;                    ///< >= 1
+  int output_every = 1;             ///< >= 1
+  int energy_every = 1;             ///< >= 1; rows between energy checks carry energy NaN
+  double balance_tolerance = 1e-8;  ///< relative, in (0, 1)
+  std::function<void()> checkpoint; ///< called every 1000 steps (may throw: an interruption)
 };
 
 /// Starts `integrator` from zero initial conditions unless `started`, runs,
