@@ -406,7 +406,21 @@ int main(int argc, char** argv) {
   };
   auto run = [&]() -> int {
     try {
-      const int status = command();
+      int status = 0;
+      try {
+        status = command();
+      } catch (const rsi::Interrupted&) {
+        throw;
+      } catch (...) {
+        // A child killed by the same signal (Ctrl-C reaches the whole
+        // process group: ccx, gmsh, the report script) fails its step
+        // first; the interruption is the cause.
+        rsi::throw_if_interrupted();
+        throw;
+      }
+      // Work that polls no checkpoint (eigensolvers, bases, the children)
+      // returns after the signal: interrupted all the same, nothing published.
+      rsi::throw_if_interrupted();
       // 0, or 3 returned by a run that stopped (its history and summary say
       // why): this run's output replaces the previous one. Exit 1 (a failed
       // report script) publishes nothing.

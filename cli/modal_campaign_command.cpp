@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "component_input.hpp"
 #include "critical_step.hpp"
+#include "interruption.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
 #include "partition.hpp"
@@ -89,6 +90,7 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
               "max err", "min err", "critical dt", "build s");
   for (const std::string& method : campaign.methods)
     for (int modes : campaign.modes) {
+      throw_if_interrupted(); // between bases (each a few eigensolves)
       const ReducedBasis basis = reduce(c.stiffness, c.mass, c.boundary, method, modes);
       const Eigen::VectorXd reduced = reduced_eigenvalues(basis);
       const int compared = std::min<int>(count, static_cast<int>(reduced.size()));
