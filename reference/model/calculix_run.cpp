@@ -31,11 +31,20 @@ std::string hex(std::uint64_t h) {
   return stream_text(s);
 }
 
-/// Runs `ccx -i job` in `dir` with its output in dir/ccx.log; the exit status.
+/// Runs `ccx -i job` in `dir` with its output in dir/ccx.log; the exit
+/// status. A ccx killed by a signal (Ctrl-C reaches the whole process group)
+/// made no model, right or wrong: `dir` is removed and ImportError thrown,
+/// never kept as a ".failed" entry.
 int run_ccx(const std::string& ccx, const fs::path& dir) {
   const ChildResult r = run_child({ccx, "-i", "job"}, dir.string(), (dir / "ccx.log").string());
   if (!r.started) throw ImportError("ccx: cannot start " + ccx + ": " + r.error);
-  return r.signal ? 128 + r.signal : r.exit_status;
+  if (r.signal != 0) {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    throw ImportError("ccx was killed by signal " + std::to_string(r.signal) +
+                      " before it wrote the matrices; run again");
+  }
+  return r.exit_status;
 }
 
 /// The lines of ccx's log that say what went wrong.
