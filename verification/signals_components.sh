@@ -18,8 +18,9 @@
 #  - Ctrl-C while ccx builds the matrices (SIGINT to the process group,
 #    ccx included, on a cold cache): exit 130, and the cache keeps no
 #    half-made or ".failed" entry (a killed ccx is no failure of the model).
-# About 20 s in Release (2 cores, shared). Skipped (exit 77) without gmsh
-# or ccx; the two report steps are skipped without matplotlib.
+# About 23 s in Release (21-23 s measured on a shared 2-core machine).
+# Skipped (exit 77) without gmsh or ccx; the two report steps are skipped
+# without matplotlib.
 # Usage: signals_components.sh RSI SOURCE_DIR CCX_CACHE
 set -u
 rsi=$1

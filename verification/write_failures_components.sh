@@ -9,7 +9,8 @@
 # error:` line naming the file, leave no temporary or staging file, and
 # leave the previous output of the same names as it was (or, on a fresh
 # --out, no --out at all). The ccx cache is filled before any limit.
-# About 15 s in Release (2 cores, shared). Skipped (exit 77) without gmsh or ccx.
+# About 20 s in Release (17-20 s measured on a shared 2-core machine).
+# Skipped (exit 77) without gmsh or ccx.
 # Usage: write_failures_components.sh RSI SOURCE_DIR CCX_CACHE
 set -u
 rsi=$1
