@@ -21,7 +21,7 @@ std::string stopped_run_remedy(const RunSummary& s) {
   if (s.dt >= s.critical_dt) {
     remedy << "the step " << s.dt
            << " s is at or above the stability limit 2/omega_max = " << s.critical_dt
-           << " s (run with --force): use a smaller time.step and drop --force";
+           << " s (run with --force): use a smaller step (time.step, --time-step) and drop --force";
   } else {
     // Below the limit the scheme is stable (SPEC §2): the energy came in
     // through the contact, as friction on blades leaning into the rotation.

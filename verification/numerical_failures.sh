@@ -70,11 +70,12 @@ has "change operating_point.friction_coefficient or the sign of bladed_disk.kink
 has "--out $work/sim holds the run up to the stop"
 
 # 2. simulate above the limit with --force: the bladed disk's top mode grows
-# from the first contact (3.96 ms) on; the line says to drop --force.
+# from the first contact on (step 472 of 3e-6 s; stopped at step 488); the
+# line says to drop --force.
 variant "$work/forced.json" time.duration=0.0045 time.step=3e-6
 expect "simulate --force above the limit" 3 -- "$rsi" simulate "$work/forced.json" --force --out "$work/sim"
 has "numerical failure: the run stopped: blow-up"
-has "use a smaller time.step and drop --force"
+has "use a smaller step (time.step, --time-step) and drop --force"
 
 # 3. campaign, the sprag case: the reference fails, exit 3 before any output
 # (--out not created), the line says why and what to change.
