@@ -20,11 +20,12 @@
 #include "bladed_disk.hpp"
 #include "basis_memory.hpp"
 #include "campaign_progress.hpp"
-#include "casing_memory.hpp"
 #include "casing.hpp"
+#include "casing_memory.hpp"
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "error_norms.hpp"
+#include "failure_remedies.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
@@ -77,14 +78,14 @@ GapErrors series_gap_errors(ScratchSeries& reduced, ScratchSeries& reference) {
 /// it for the run's own failure; run_on_threads rethrows the cause.
 struct CampaignEnded {};
 
-/// `e` with the remedy a campaign offers: it has no --force.
-StabilityError without_force(const StabilityError& e) {
-  std::string what = e.what();
-  const std::string force = " or --force";
-  const size_t at = what.rfind(force);
-  if (at != std::string::npos)
-    what.replace(at, force.size(), " (time.step; a campaign has no --force)");
-  return StabilityError(what);
+/// A campaign has no --force: the remedy of a step above a run's limit is
+/// the key that set the step.
+std::string step_remedy(const CampaignRun& r) {
+  if (r.step.kind == StepRule::Kind::given)
+    return "a smaller time_step of run " + r.name() +
+           " in key 'campaign', dividing the output interval, or \"own\"; a campaign has no "
+           "--force";
+  return "time.step; a campaign has no --force";
 }
 
 std::string run_name(const CampaignRun& r) {
@@ -162,7 +163,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       check_time_step_bound(c.time.step, bd.stiffness, bd.mass, false, "bladed disk");
       check_time_step_bound(c.time.step, casing.stiffness, casing.mass, false, "casing");
     } catch (const StabilityError& e) {
-      throw without_force(e);
+      throw without_force(e, "time.step; a campaign has no --force");
     }
     // The reduced runs' dense casing matrices, as many at once as threads run them.
     check_dense_casing_fits(c, casing.n_dofs(),
@@ -233,8 +234,8 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
       } catch (const StabilityError& e) {
         // The reference's step is bad input (exit 2, as for simulate): no
         // campaign without its reference. A reduced run's own limit fails that run.
-        if (i == 0) throw without_force(e);
-        r.error = e.what();
+        if (i == 0) throw without_force(e, step_remedy(r.run));
+        r.error = without_force(std::string(e.what()), step_remedy(r.run));
       } catch (const std::exception& e) {
         r.error = e.what();
       }
@@ -249,8 +250,13 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   // rethrown here (worker_threads.hpp).
   run_on_threads(std::min<int>(jobs, static_cast<int>(runs.size())), worker, failed);
   throw_if_interrupted();
-  if (!runs[0].error.empty())
-    throw IntegrationError("campaign: the reference run failed: " + runs[0].error);
+  if (!runs[0].error.empty()) {
+    // Stopped by the monitor (it ran steps), or an exception of the integrator.
+    const RunSummary& s = runs[0].result.summary;
+    throw IntegrationError(
+        "campaign: the reference run failed: " + runs[0].error + "; " +
+        (s.steps > 0 ? stopped_run_remedy(s) : "no reduced run is compared without it"));
+  }
 
   const RunResult& reference = runs[0].result;
   std::vector<GapErrors> errors(runs.size());
@@ -327,7 +333,17 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
     }
     std::printf("report: %s/report.md\n", options.out.c_str());
   }
-  return all_ok ? 0 : 3;
+  if (all_ok) return 0;
+  // Exit 3: one error line; each failed run's line above says what failed
+  // and what to change.
+  const long n_failed = std::count_if(runs.begin(), runs.end(),
+                                      [](const CampaignResult& r) { return !r.error.empty(); });
+  std::fprintf(stderr,
+               "rsi: error: numerical failure: %ld of %zu campaign runs failed (the lines 'rsi: "
+               "campaign run ... failed' above say why and what to change); the others are in "
+               "--out %s\n",
+               n_failed, runs.size(), options.out.c_str());
+  return 3;
 }
 
 } // namespace rsi

@@ -71,7 +71,16 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
               s.energy_balance_error, s.energy_scale, s.final_contact_work, s.final_damping_work);
   std::printf("wrote %s/history.csv, %s/summary.json\n", options.out.c_str(), options.out.c_str());
   if (s.completed) return 0;
-  std::fprintf(stderr, "rsi: error: numerical failure: the run stopped: %s\n", s.status.c_str());
+  // Exit 3 says what to change: the step (above its limit only with
+  // --force) or the contact's friction.
+  std::fprintf(stderr,
+               "rsi: error: numerical failure: the run stopped: %s; %s (--out %s holds "
+               "the run up to the stop)\n",
+               s.status.c_str(),
+               s.dt >= s.critical_dt
+                   ? "the step is at or above the stability limit (--force): drop --force"
+                   : "use a smaller rubbing.step_safety or rubbing.friction_coefficient",
+               options.out.c_str());
   return 3;
 }
 

@@ -21,6 +21,7 @@
 #include "central_difference.hpp"
 #include "commands.hpp"
 #include "component.hpp"
+#include "component_integrator.hpp"
 #include "interruption.hpp"
 #include "modal_analysis.hpp"
 #include "output_files.hpp"
@@ -357,8 +358,9 @@ int main(int argc, char** argv) {
   // set only when the command returns 0 or 3 (staged_output.hpp).
   rsi::StagedOutput output;
   // Exit status by exception kind: 2 bad input, 3 numerical failure, 1 else.
-  auto failure = [](const char* kind, const std::exception& e, int status) {
-    std::fprintf(stderr, "rsi: %s: %s\n", kind, e.what());
+  // Messages name the paths the user gave, never the staging folder.
+  auto failure = [&output](const char* kind, const std::exception& e, int status) {
+    std::fprintf(stderr, "rsi: %s: %s\n", kind, output.shown(e.what()).c_str());
     return status;
   };
   auto command = [&]() -> int {
@@ -443,6 +445,8 @@ int main(int argc, char** argv) {
     } catch (const rsi::ModalResolutionError& e) {
       return failure("error", e, 2);
     } catch (const rsi::ReducedIntegrationError& e) {
+      return failure("error: numerical failure", e, 3);
+    } catch (const rsi::ComponentIntegrationError& e) {
       return failure("error: numerical failure", e, 3);
     } catch (const rsi::IntegrationError& e) {
       return failure("error: numerical failure", e, 3);

@@ -1,7 +1,9 @@
 #include "output_files.hpp"
 
 #include <cassert>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -15,12 +17,21 @@ std::string temporary_name(const std::string& path) {
   return path + ".tmp" + std::to_string(::getpid());
 }
 
+/// ": cannot write (why); what to change", for the errno `error` of the
+/// failed call (0: unknown). The temporary file is not named: it is removed.
+std::string cannot_write(int error) {
+  return std::string(": cannot write (") + (error != 0 ? std::strerror(error) : "write failed") +
+         "); free space on its disk, raise the file-size limit (ulimit -f) or choose another "
+         "--out";
+}
+
 void commit(const std::string& temporary, const std::string& path) {
   std::error_code error;
   std::filesystem::rename(temporary, path, error);
   if (error) {
+    const int why = error.value();
     std::filesystem::remove(temporary, error);
-    throw OutputError(path + ": cannot write (" + error.message() + ")");
+    throw OutputError(path + cannot_write(why));
   }
 }
 
@@ -67,11 +78,13 @@ void write_text_file(const std::string& path, const std::string& content) {
   const std::string temporary = temporary_name(path);
   {
     std::ofstream out(temporary, std::ios::binary);
+    errno = 0;
     out << content;
     out.close();
     if (!out) {
+      const int why = errno;
       std::filesystem::remove(temporary);
-      throw OutputError(path + ": cannot write");
+      throw OutputError(path + cannot_write(why));
     }
   }
   commit(temporary, path);
@@ -81,7 +94,7 @@ StreamedTextFile::StreamedTextFile(const std::string& path)
     : m_path(path)
     , m_temporary(temporary_name(path))
     , m_file(std::fopen(m_temporary.c_str(), "wb")) {
-  if (!m_file) throw OutputError(path + ": cannot write (cannot create " + m_temporary + ")");
+  if (!m_file) throw OutputError(path + cannot_write(errno));
 }
 
 StreamedTextFile::~StreamedTextFile() {
@@ -94,7 +107,7 @@ StreamedTextFile::~StreamedTextFile() {
 void StreamedTextFile::append(const std::string& piece) {
   assert(m_file && "StreamedTextFile::append after commit");
   if (std::fwrite(piece.data(), 1, piece.size(), m_file) != piece.size())
-    throw OutputError(m_path + ": cannot write (" + m_temporary + ")");
+    throw OutputError(m_path + cannot_write(errno));
 }
 
 void StreamedTextFile::commit() {
@@ -102,9 +115,10 @@ void StreamedTextFile::commit() {
   std::FILE* file = m_file;
   m_file = nullptr;
   if (std::fclose(file) != 0) {
+    const int why = errno;
     std::error_code error;
     std::filesystem::remove(m_temporary, error);
-    throw OutputError(m_path + ": cannot write");
+    throw OutputError(m_path + cannot_write(why));
   }
   rsi::commit(m_temporary, m_path);
 }

@@ -213,10 +213,20 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
     std::printf("report: %s/report.md\n", options.out.c_str());
   }
   if (all_ok) return 0;
+  // Exit 3: one error line (issue 13, class 8), each failed run on its own line.
+  long n_failed = 0;
   for (const RubbingCampaignRun& r : runs)
-    if (!r.error.empty())
-      std::fprintf(stderr, "rsi: error: numerical failure: %s: %s\n", run_name(r).c_str(),
+    if (!r.error.empty()) {
+      std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", run_name(r).c_str(),
                    r.error.c_str());
+      ++n_failed;
+    }
+  std::fprintf(stderr,
+               "rsi: error: numerical failure: %ld of %zu campaign runs failed (listed above: "
+               "a refused reduction names its modes; a stopped run needs a smaller "
+               "rubbing.step_safety or rubbing.friction_coefficient); the others are in --out "
+               "%s\n",
+               n_failed, runs.size(), options.out.c_str());
   return 3;
 }
 

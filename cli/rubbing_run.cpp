@@ -151,7 +151,15 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
                                         : ImposedGap::constant(setup.gap);
   const RigidSurfaceContact law(rigid_surface_nodes(model.component, model.contact_nodes), gap,
                                 setup.rotation_speed, setup.friction_coefficient);
-  const double omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
+  double omega_max = 0.0;
+  try {
+    omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
+  } catch (const ModalError& e) {
+    // A consistent mass may be singular (Rotor 37's C3D15): the reduced
+    // methods still run on it, the full-order explicit run cannot.
+    throw ModalError("the full-order run of " + model.component.name + ": " + e.what() +
+                     "; or run a reduced --method (cb, ccm, macneal)");
+  }
   const double sample_dt = model.period / setup.steps_per_revolution;
   RubbingRun run;
   run.step_limit = 2.0 / omega_max;

@@ -15,6 +15,7 @@
 #include "case_json.hpp"
 #include "commands.hpp"
 #include "component_case.hpp"
+#include "failure_remedies.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
@@ -177,7 +178,10 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
               options.out.c_str());
   if (s.completed) return 0;
   // Exit 3 always says why on stderr, not only in the summary lines above.
-  std::fprintf(stderr, "rsi: error: numerical failure: the run stopped: %s\n", s.status.c_str());
+  std::fprintf(stderr,
+               "rsi: error: numerical failure: the run stopped: %s; %s (--out %s holds the run "
+               "up to the stop)\n",
+               s.status.c_str(), stopped_run_remedy(s).c_str(), options.out.c_str());
   return 3;
 }
 

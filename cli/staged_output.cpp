@@ -193,4 +193,12 @@ void StagedOutput::abandon() noexcept {
   m_directories.remove_empty();
 }
 
+std::string StagedOutput::shown(const std::string& message) const {
+  if (m_staging.empty()) return message;
+  std::string text = message;
+  for (size_t at = 0; (at = text.find(m_staging, at)) != std::string::npos; at += m_out.size())
+    text.replace(at, m_staging.size(), m_out);
+  return text;
+}
+
 } // namespace rsi

@@ -56,6 +56,10 @@ public:
   /// directories open created that are empty: --out as it was. Never throws
   /// (it runs during unwinding).
   void abandon() noexcept;
+  /// `message` with the staging folder named as the --out path the user
+  /// gave (the staging folder is removed before the message is read);
+  /// `message` itself when nothing is staged.
+  std::string shown(const std::string& message) const;
 
 private:
   OutputDirectories m_directories;

@@ -23,6 +23,7 @@
 #include "casing_memory.hpp"
 #include "commands.hpp"
 #include "critical_step.hpp"
+#include "failure_remedies.hpp"
 #include "interaction_lines.hpp"
 #include "interruption.hpp"
 #include "modal_analysis.hpp"
@@ -181,6 +182,16 @@ TaskResult run_task(const Case& c, const PreparedRun& r, double speed, bool inje
     throw;
   } catch (const std::bad_alloc&) {
     throw; // out of memory ends the sweep, not one speed
+  } catch (const StabilityError& e) {
+    // A sweep has no --force: the remedy is the key that set the step.
+    out.row = csv_row(speed, r.run, "failed", nullptr);
+    out.error = without_force(
+        std::string(e.what()),
+        r.run.step.kind == StepRule::Kind::given
+            ? "a smaller time_step of run " + run_name(r.run) +
+                  " (sweep.runs or --time-step), dividing the output interval, or \"own\"; a "
+                  "sweep has no --force"
+            : "time.step; a sweep has no --force");
   } catch (const std::exception& e) {
     out.row = csv_row(speed, r.run, "failed", nullptr);
     out.error = e.what();
@@ -453,8 +464,9 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
     std::printf("report: %s/sweep_report.md\n", options.out.c_str());
   }
   if (!failures.empty()) {
-    std::fprintf(stderr, "rsi: error: numerical failure: %zu run(s) of the sweep failed (listed "
-                         "above); the other rows are in sweep.csv\n",
+    std::fprintf(stderr,
+                 "rsi: error: numerical failure: %zu run(s) of the sweep failed (listed "
+                 "above, each with what to change); the other rows are in sweep.csv\n",
                  failures.size());
     return 3;
   }

@@ -57,7 +57,9 @@ CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd
   if (modes < n && forcing.any()) {
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(casing.stiffness);
     if (k.info() != Eigen::Success)
-      throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized");
+      throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized "
+                       "(the case's check of K should have refused it); change "
+                       "casing.section.thickness or casing.n_elements");
     const Eigen::VectorXd x = k.solve(forcing);
     const Eigen::VectorXd y = orthogonal_part(m.shapes, casing.mass, x);
     const double size = mass_norm(casing.mass, x);
@@ -75,7 +77,8 @@ CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd
       m_small = 0.5 * (m_small + m_small.transpose()).eval();
       const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(k_small, m_small);
       if (ritz.info() != Eigen::Success)
-        throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction failed");
+        throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction "
+                         "failed; keep fewer casing modes (--casing-modes, casing_modes)");
       basis.shapes = v * ritz.eigenvectors();
       basis.omega_squared = ritz.eigenvalues();
       basis.static_correction = true;

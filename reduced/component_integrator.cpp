@@ -15,6 +15,10 @@ namespace rsi {
 namespace {
 
 const std::string kWhere = "ComponentIntegrator: ";
+/// What to change when the reduced mass fails (issue 13, class 8): a
+/// consistent mass may be singular (Rotor 37's C3D15), T^T M T with it.
+const std::string kMassRemedy =
+    "; set component.mass to \"lumped\" (HRZ, positive definite) or keep fewer modes";
 
 Eigen::MatrixXd block(const Eigen::MatrixXd& a, const std::vector<int>& rows,
                       const std::vector<int>& cols) {
@@ -121,7 +125,8 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     const Eigen::LLT<Eigen::MatrixXd> llt(a);
     if (llt.info() != Eigen::Success)
       throw ComponentIntegrationError(kWhere + "M^ + dt/2 C^ of the " + basis.method +
-                                      " model is not positive definite (Cholesky failed)");
+                                      " model is not positive definite (Cholesky failed)" +
+                                      kMassRemedy);
     m_p = (m_dt * m_dt) * llt.solve(m_k);
     if (m_c.size()) m_d = m_dt * llt.solve(Eigen::MatrixXd(m_c.asDiagonal()));
     Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(m_r, 3 * m_nc);
@@ -144,7 +149,8 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     const Eigen::LLT<Eigen::MatrixXd> kbb(block(m_k, m_boundary, m_boundary));
     if (kbb.info() != Eigen::Success)
       throw ComponentIntegrationError(kWhere + "K^_BB of the massless boundary is not positive "
-                                               "definite (static condensation failed)");
+                                               "definite (static condensation failed); use a "
+                                               "method with a massed boundary (cb, ccm)");
     const Eigen::MatrixXd kbi = block(m_k, m_boundary, m_interior);
     m_z = -kbb.solve(kbi);
     m_g = kbb.solve(Eigen::MatrixXd(m_b.transpose()));
@@ -153,8 +159,10 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     if (m_c.size()) ai.diagonal() += 0.5 * m_dt * take(m_c, m_interior);
     const Eigen::LLT<Eigen::MatrixXd> llt(ai);
     if (llt.info() != Eigen::Success)
-      throw ComponentIntegrationError(kWhere + "M^_II + dt/2 C^_I is not positive definite "
-                                               "(Cholesky failed)");
+      throw ComponentIntegrationError(kWhere +
+                                      "M^_II + dt/2 C^_I is not positive definite "
+                                      "(Cholesky failed)" +
+                                      kMassRemedy);
     // With u_B^n = Z q_I^n + S B_B^T lambda_n (the balance (B)), the force of
     // (I) is K^_II q + K^_IB u_B = K_c q + K^_IB S B_B^T lambda_n, K_c the
     // condensed stiffness K^_II - K^_IB S K^_BI (Omega_1^2 for MacNeal): a
@@ -266,7 +274,9 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
       if (!r.converged())
         throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n + 1) +
                                         " (t = " + message_number((m_n + 1) * m_dt) +
-                                        " s): contact solve failed: " + r.message);
+                                        " s): contact solve failed: " + r.message +
+                                        "; use a smaller rubbing.step_safety or "
+                                        "rubbing.friction_coefficient");
       m_lambda_next.setZero();
       m_state.assign(m_nc, ReducedContactState::open);
       for (int i = 0; i < na; ++i) {
@@ -439,7 +449,8 @@ StepReport ComponentIntegrator::step() {
   if (!m_x.allFinite() || !m_gap.allFinite())
     throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n) +
                                     " (t = " + message_number(time()) +
-                                    " s): the state is not finite (blow-up)");
+                                    " s): the state is not finite (blow-up); use a smaller "
+                                    "rubbing.step_safety, without --force");
   return report;
 }
 

@@ -14,6 +14,11 @@
 namespace rsi {
 namespace {
 
+/// What to change when (K^, M^) has no eigenpairs (issue 13, class 8).
+const std::string kBasisRemedy =
+    " (M^ = T^T M T not positive definite, or not finite); keep fewer modes (--modes) or use "
+    "another --method";
+
 /// (K^, M^) or, with a massless boundary, the condensed pair on the massed coordinates.
 struct FiniteProblem {
   Eigen::MatrixXd stiffness;
@@ -41,7 +46,8 @@ FiniteProblem finite_problem(const ReducedBasis& basis) {
   const Eigen::LLT<Eigen::MatrixXd> k_bb(block(basis.stiffness, boundary, boundary));
   if (k_bb.info() != Eigen::Success)
     throw ReducedIntegrationError("reduced model: the stiffness K^_BB of the massless boundary is "
-                                  "not positive definite (static condensation failed)");
+                                  "not positive definite (static condensation failed); use a "
+                                  "method with a massed boundary (--method cb or ccm)");
   const Eigen::MatrixXd k_br = block(basis.stiffness, boundary, massed);
   const Eigen::MatrixXd condensed =
       block(basis.stiffness, massed, massed) - k_br.transpose() * k_bb.solve(k_br);
@@ -55,7 +61,8 @@ Eigen::VectorXd reduced_eigenvalues(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
       problem.stiffness, problem.mass, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed");
+    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
+                                  kBasisRemedy);
   return eigen.eigenvalues();
 }
 
@@ -74,7 +81,8 @@ ReducedModes reduced_modes(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness,
                                                                         basis.mass);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed");
+    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
+                                  kBasisRemedy);
   return {eigen.eigenvectors(), eigen.eigenvalues()};
 }
 

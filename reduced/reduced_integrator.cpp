@@ -12,6 +12,23 @@ bool finite_non_negative(double x) {
   return std::isfinite(x) && x >= 0.0;
 }
 
+// What to change, for the messages of ReducedIntegrationError (issue 13,
+// class 8). The case's M is positive definite (checked when it loads) and
+// so is T^T M T for a basis T of full rank: a mass that fails here is a
+// basis that lost its rank in rounding.
+const std::string kReducedMassRemedy =
+    "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: "
+    "keep fewer modes (--modes, or the campaign's modes) or use another --method";
+const std::string kCasingMassRemedy =
+    "; change casing.section or material.density (the loader checks the casing's M: report "
+    "this case)";
+const std::string kStepRemedy =
+    "; use a smaller step (time.step, or --time-step and the campaign's time_step of a reduced "
+    "run)";
+const std::string kContactRemedy =
+    "; change operating_point.friction_coefficient (friction that cancels the contacts' normal "
+    "flexibility) or use a smaller step (time.step, --time-step)";
+
 } // namespace
 
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
@@ -65,7 +82,7 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   if (mq_factor.info() != Eigen::Success)
     throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
                                   (m_q_damped ? " plus dt/2 C^" : "") +
-                                  " is not positive definite");
+                                  " is not positive definite" + kReducedMassRemedy);
   m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_tip_position = basis.boundary_position;
   const bool modal = disk_modes != nullptr && !m_q_damped;
@@ -112,7 +129,9 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     const Eigen::ArrayXd a = 1.0 + 0.5 * dt * m_modal_gamma.array();
     if (!(a.minCoeff() > 0.0) || !a.allFinite())
       throw ReducedIntegrationError(
-          "reduced integrator: the modal casing's 1 + dt/2 gamma_i is not positive");
+          "reduced integrator: the modal casing's 1 + dt/2 gamma_i is not positive (gamma_i = "
+          "alpha + beta omega_i^2 of damping.rayleigh); damping.rayleigh.alpha and beta must be "
+          ">= 0 and finite");
     m_modal_a_inverse = a.inverse().matrix();
     m_phi_scaled_t = m_modal_a_inverse.asDiagonal() * m_phi.transpose();
     m_mc_inverse = m_phi * m_phi_scaled_t;
@@ -132,7 +151,7 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
   if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
     throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
                                   (m_c_damped ? " plus dt/2 C_c" : "") +
-                                  " is not positive definite");
+                                  " is not positive definite" + kCasingMassRemedy);
   m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(nc, nc));
   m_mc_order.resize(nc);
   for (int i = 0; i < nc; ++i)
@@ -234,7 +253,8 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
     const Eigen::LLT<Eigen::MatrixXd> mass(m_mq);
     if (mass.info() != Eigen::Success)
       throw ReducedIntegrationError(
-          "reduced integrator: the reduced mass matrix is not positive definite");
+          "reduced integrator: the reduced mass matrix is not positive definite" +
+          kReducedMassRemedy);
     m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
   }
   if (m_modal_disk) {
@@ -256,7 +276,8 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass(m_mc);
     if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
       throw ReducedIntegrationError(
-          "reduced integrator: the casing mass matrix is not positive definite");
+          "reduced integrator: the casing mass matrix is not positive definite" +
+          kCasingMassRemedy);
     m_c_prev = 0.5 * m_dt * m_dt * mass.solve(m_force);
   } else {
     m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
@@ -342,7 +363,8 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
     m_residual -= m_minus_gap;
     if (!m_la.allFinite() || m_residual.norm() > 1e-8 * m_minus_gap.norm())
       throw ReducedIntegrationError("reduced integrator: singular contact matrix W at step " +
-                                    std::to_string(m_n + 1));
+                                    std::to_string(m_n + 1) + " (" + std::to_string(m) +
+                                    " active tips)" + kContactRemedy);
     bool changed = false;
     for (int a = 0; a < m; ++a)
       if (m_la(a) < 0.0) m_active[m_set[a]] = 0, changed = true; // drop every negative multiplier
@@ -359,7 +381,7 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
     if (!changed) return;
   }
   throw ReducedIntegrationError("reduced integrator: the active set did not settle at step " +
-                                std::to_string(m_n + 1));
+                                std::to_string(m_n + 1) + kStepRemedy);
 }
 
 Eigen::Matrix2d ReducedIntegrator::coulomb_block(const TipContact& i, const TipContact& j) const {
@@ -401,7 +423,8 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
   for (int k = 0; k < nt; ++k) {
     if (!std::isfinite(tips[k].gap) || !std::isfinite(tips[k].slip))
       throw ReducedIntegrationError("reduced integrator: non-finite predicted gap or slip of tip " +
-                                    std::to_string(k + 1) + " at step " + std::to_string(m_n + 1));
+                                    std::to_string(k + 1) + " at step " + std::to_string(m_n + 1) +
+                                    " (the state blew up)" + kStepRemedy);
     if (tips[k].gap < 0.0) m_active[k] = 1, ++n_active;
   }
   if (n_active > 0) {
@@ -424,7 +447,8 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
       const CoulombGaussSeidelReport solved = m_coulomb.solve(m_w, m_rows, m_rows_lambda);
       if (!solved.converged())
         throw ReducedIntegrationError("reduced integrator: Coulomb contact problem at step " +
-                                      std::to_string(m_n + 1) + ": " + solved.message);
+                                      std::to_string(m_n + 1) + ": " + solved.message +
+                                      kContactRemedy);
       for (int a = 0; a < m; ++a)
         m_warm.segment<2>(2 * m_set[a]) = m_rows_lambda.segment<2>(2 * a);
       bool joined = false; // tips left out whose gap the correction would close
@@ -441,7 +465,7 @@ void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepR
       if (round >= nt)
         throw ReducedIntegrationError(
             "reduced integrator: the set of closing tips did not settle at step " +
-            std::to_string(m_n + 1));
+            std::to_string(m_n + 1) + kStepRemedy);
     }
     m_predicted_kept = tips;
     const std::vector<ReducedContactState>& states = m_coulomb.states();

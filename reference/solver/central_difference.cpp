@@ -10,6 +10,17 @@ namespace rsi {
 
 namespace {
 
+// What to change, for the messages of IntegrationError (issue 13, class 8).
+// The integrator serves the paper's case and the components: both keys.
+const std::string kMassRemedy =
+    "; the paper's case checks its M when it loads; a component's M must be positive definite "
+    "for a full-order run: set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+const std::string kStepRemedy =
+    "; use a smaller step (time.step; a component's rubbing.step_safety), without --force";
+const std::string kContactRemedy =
+    "; change the friction coefficient (operating_point.friction_coefficient; a component's "
+    "rubbing.friction_coefficient) or use a smaller step (time.step; rubbing.step_safety)";
+
 /// M, once K, M and dt are checked to be usable together.
 const Eigen::SparseMatrix<double>& checked_mass(const Eigen::SparseMatrix<double>& stiffness,
                                                 const Eigen::SparseMatrix<double>& mass,
@@ -175,10 +186,12 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
     // not A^-1: one solve with a factor of M' made for it.
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass{Eigen::SparseMatrix<double>(m_m)};
     if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
-      throw IntegrationError("central differences: the mass matrix is not positive definite");
+      throw IntegrationError("central differences: the mass matrix is not positive definite" +
+                             kMassRemedy);
     m_u_prev = mass.solve(m_u_prev).eval();
     if (mass.info() != Eigen::Success || !m_u_prev.allFinite())
-      throw IntegrationError("central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed");
+      throw IntegrationError("central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed" +
+                             kMassRemedy);
   } else {
     apply_inverse_mass(m_u_prev);
   }
@@ -264,7 +277,7 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     if (!m_lu.isInvertible())
       throw IntegrationError("central differences: singular contact matrix W (" +
                              std::to_string(na) + " active constraints) at step " +
-                             std::to_string(m_n + 1));
+                             std::to_string(m_n + 1) + kContactRemedy);
     m_lambda_active = m_lu.solve(m_rhs);
     const Eigen::VectorXd& la = m_lambda_active;
     Eigen::Index most_negative = 0;
@@ -292,7 +305,7 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     return;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
-                         std::to_string(m_n + 1));
+                         std::to_string(m_n + 1) + kStepRemedy);
 }
 
 void CentralDifference::add_damping_work() {
@@ -420,10 +433,10 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
     if (!solution.ok())
       throw IntegrationError("central differences: the frictional contact solver failed at step " +
                              std::to_string(m_n + 1) + " (" + std::to_string(np) +
-                             " contacts in play): " + solution.message);
+                             " contacts in play): " + solution.message + kContactRemedy);
     if (!solution.lambda.allFinite())
       throw IntegrationError("central differences: non-finite contact multipliers at step " +
-                             std::to_string(m_n + 1));
+                             std::to_string(m_n + 1) + kStepRemedy);
     // u_{n+1} - u~ = dt^2 A^-1 B^T lambda.
     m_correction.setZero(m_m.rows());
     for (int a = 0; a < np; ++a)
@@ -468,8 +481,9 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
     }
     return;
   }
-  throw IntegrationError("central differences: the set of contacts in play did not settle at step " +
-                         std::to_string(m_n + 1));
+  throw IntegrationError(
+      "central differences: the set of contacts in play did not settle at step " +
+      std::to_string(m_n + 1) + kStepRemedy);
 }
 
 StepReport CentralDifference::step_coulomb() {
@@ -483,7 +497,7 @@ StepReport CentralDifference::step_coulomb() {
   if (!geo.normal_gap.allFinite() || !geo.slip.allFinite())
     throw IntegrationError("central differences: non-finite predicted gap or slip at step " +
                            std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
-                           " s): the state blew up");
+                           " s): the state blew up" + kStepRemedy);
   bool any = false;
   for (int c = 0; c < nc; ++c) {
     m_in_play[c] = geo.normal_gap(c) < 0.0 || m_lambda(c) != 0.0 ||

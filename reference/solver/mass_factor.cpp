@@ -14,6 +14,12 @@ namespace rsi {
 
 namespace {
 
+/// What to change (issue 13, class 8): the paper's case checks its M when it
+/// loads, a component's M may be singular (a consistent C3D15 mass).
+const std::string kMassRemedy =
+    "; a full-order run needs M positive definite (the paper's case checks it when it loads): "
+    "for a component set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+
 /// cholmod_common and a factor, released on every way out of the constructor.
 class CholmodFactor {
 public:
@@ -96,7 +102,7 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
       c.factor->is_ll || c.factor->is_super)
     throw MassFactorError(
         "the mass matrix is not positive definite (CHOLMOD factorization failed, status " +
-        std::to_string(c.common.status) + ")");
+        std::to_string(c.common.status) + ")" + kMassRemedy);
   // Simplicial LDL^T: D_jj is the first entry of column j (AMD order), then L's.
   const cholmod_factor& f = *c.factor;
   const auto* p = static_cast<const int*>(f.p);
@@ -107,7 +113,8 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   for (int j = 0; j < n; ++j)
     if (!(x[p[j]] > 0.0))
       throw MassFactorError("the mass matrix is not positive definite (LDL^T pivot " +
-                            std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) + ")");
+                            std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) + ")" +
+                            kMassRemedy);
 
   // P: AMD, then the columns sorted by component and level (ties kept in
   // AMD order), so that each component is a contiguous block.
