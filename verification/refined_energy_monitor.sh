@@ -17,8 +17,9 @@
 # its largest change in one step (about 1/(omega dt): 3.4e3 at 3.125e-7 s,
 # 1.1e4 at 1e-7 s). Measured errors are 1e-3 of the bound; leaving E_0 out
 # of the balance (7.8e-7 and 8.4e-8 of the scale) exceeds it.
-# Release: about 2.5 s (72-element full run 1.4 s; its CB-44 basis alone
-# would add 5 s, and the reduced monitor is the 36-element CB-44's).
+# Release: about 2.5 s of CPU, 4.4 s wall (72-element full run 1.4 s; its
+# CB-44 basis alone would add 5 s, and the reduced monitor is the
+# 36-element CB-44's); the AddressSanitizer build: 20 s.
 # Usage: refined_energy_monitor.sh RSI SOURCE_DIR
 set -u
 rsi=$1
