@@ -18,17 +18,8 @@ fail() {
   echo "FAIL $*"
   failures=$((failures + 1))
 }
-# RUN LIMIT_KB DIR ARGS...: rsi under a file-size limit of LIMIT_KB; its
-# exit status and stderr (in $work/err).
-limited() {
-  local limit=$1
-  shift
-  (
-    trap '' XFSZ
-    ulimit -f "$limit"
-    "$rsi" "$@"
-  ) >"$work/log" 2>"$work/err"
-}
+# shellcheck source=file_size_limit.sh
+source "$src/verification/file_size_limit.sh"
 check() { # NAME EXPECTED_FILE_PATTERN STATUS DIR
   local name=$1 pattern=$2 status=$3 dir=$4
   if [ "$status" -ne 2 ]; then
