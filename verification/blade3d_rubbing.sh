@@ -16,7 +16,10 @@
 #    at 64 eps of the step's slip scale, and a slip onset, |s| << |s~|,
 #    divides that by |s|: up to 1.3e-13 measured in
 #    test_component_coulomb_oscillator, local_coulomb_solution.hpp says why);
-#  - the contact was reached (the window is not contact free).
+#  - the contact was reached (the window is not contact free);
+#  - summary.json's wall_seconds holds its integration_seconds (the run's
+#    clock starts before the step loop's and stops after it; a reduced
+#    rubbing run printed and stored 0 s until session 10).
 # Skipped (exit 77) without gmsh or ccx.
 # Usage: blade3d_rubbing.sh RSI SOURCE_DIR CCX_CACHE
 set -u
@@ -48,6 +51,8 @@ for (method, modes), r in sorted(rows.items()):
     name = f"{method}-{modes}"
     check(r["completed"] == "1", f"{name} completed")
     summary = json.load(open(f"{out}/runs/{'full' if method == 'full' else name}/summary.json"))
+    check(summary["wall_seconds"] >= summary["integration_seconds"] > 0,
+          f"{name}: wall {summary['wall_seconds']:.4g} s >= integration {summary['integration_seconds']:.4g} s > 0")
     check(summary["max_lambda"] > 0, f"{name}: contact reached (max lambda_n {summary['max_lambda']:.4g} N)")
     check(summary["max_cone_violation"] <= 64 * eps * summary["max_lambda"],
           f"{name}: cone violation {summary['max_cone_violation']:.3g} <= 64 eps max lambda_n")
