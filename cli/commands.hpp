@@ -136,6 +136,13 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
 int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs,
                              const std::string& where, int runs_at_once);
 
+/// Refuses time.step, the full run's step, when it is above the stability
+/// limit of the bladed disk or of the casing by the cheap lower bound of
+/// omega_max (run_monitor.hpp), before any run: each full run would refuse
+/// it after its assembly. StabilityError naming time.step; `command` has no
+/// --force.
+void check_case_step_bound(const Case& c, const std::string& command);
+
 /// rsi sweep: the case's runs over its rotation speeds, alone or over MPI ranks.
 int run_sweep(const SweepOptions& options, StagedOutput& output);
 
