@@ -24,11 +24,11 @@
 //
 // Skipped, saying why, when gmsh or ccx (blade) or the Rotor 37 folder or
 // ccx (Rotor 37) is absent. ccx's runs are cached (RSI_CCX_CACHE, default
-// build/ccx-cache). Costs in Release on 2 cores (printed), one process:
-// the blade 90 s, of which 60-80 s are the complete CB basis (dense
-// 4,101 x 4,101: reduce() alone 30-37 s); Rotor 37 50 s while its modes
-// cannot run (each CTest process loads its component again: 200 s under
-// ctest for both).
+// build/ccx-cache). CTest runs each component's rows in one process
+// (verification/CMakeLists.txt, rsi_add_test_groups), so the component is
+// loaded and each basis built once: Rotor 37 55 s in Release (447 s as
+// one process per case), the blade's complete CB basis (its own coarser
+// blade) in a process of its own beside them.
 //
 // Rotor 37's M, as ccx 2.20 writes it for the deck's C3D15 wedges, is
 // singular: Lanczos on (M + c I)^-1 finds 102 eigenvalues within
@@ -137,9 +137,9 @@ struct Rotor37 {
   }
 };
 
-/// A component, what the rows reuse, and what was computed so far. CTest
-/// runs each test in its own process (gtest_discover_tests): the full modes
-/// and the bases are computed when a test first needs them, not at load.
+/// A component, what the rows reuse, and what was computed so far: the
+/// full modes and the bases are computed when a test first needs them, not
+/// at load (a filter that runs one case builds only what it needs).
 struct Loaded {
   Component model;
   std::unique_ptr<rows::Component> c;
