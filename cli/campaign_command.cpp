@@ -137,12 +137,11 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
   return bd.n_dofs();
 }
 
-void check_case_step_bound(const Case& c, const std::string& command) {
+void check_case_step_bound(const Case& c, const Casing& casing, const std::string& command) {
   // The step against one dof's Rayleigh quotient of each part (a lower
   // bound of omega_max, run_monitor.hpp): the full runs would each refuse
   // it, after their assembly (issue 13, class 9).
   const BladedDisk bd = assemble_bladed_disk(c);
-  const Casing casing = assemble_casing(c);
   try {
     check_time_step_bound(c.time.step, bd.stiffness, bd.mass, false, "bladed disk");
     check_time_step_bound(c.time.step, casing.stiffness, casing.mass, false, "casing");
@@ -167,10 +166,13 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
   const int disk_dofs = check_runs_against_model(
       c, c.campaign, c.source + ": key 'campaign'",
       std::min<int>(jobs, static_cast<int>(c.campaign.size())));
-  check_case_step_bound(c, "campaign");
-  // The reduced runs' dense casing matrices, as many at once as threads run them.
-  check_dense_casing_fits(c, assemble_casing(c).n_dofs(),
-                          std::min<int>(jobs, static_cast<int>(c.campaign.size())));
+  {
+    const Casing casing = assemble_casing(c);
+    check_case_step_bound(c, casing, "campaign");
+    // The reduced runs' dense casing matrices, as many at once as threads run them.
+    check_dense_casing_fits(c, casing.n_dofs(),
+                            std::min<int>(jobs, static_cast<int>(c.campaign.size())));
+  }
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
 
   // Job 0 is the reference; the others the reduced runs, taken in turn by the threads.

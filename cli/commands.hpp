@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "case_file.hpp"
+#include "casing.hpp"
 #include "component_case.hpp"
 #include "history.hpp"
 #include "modal_analysis.hpp"
@@ -141,7 +142,7 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
 /// omega_max (run_monitor.hpp), before any run: each full run would refuse
 /// it after its assembly. StabilityError naming time.step; `command` has no
 /// --force.
-void check_case_step_bound(const Case& c, const std::string& command);
+void check_case_step_bound(const Case& c, const Casing& casing, const std::string& command);
 
 /// rsi sweep: the case's runs over its rotation speeds, alone or over MPI ranks.
 int run_sweep(const SweepOptions& options, StagedOutput& output);

@@ -236,13 +236,16 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
     throw UsageError("--jobs: must be in [1, 64], got " + std::to_string(options.jobs));
   const int disk_dofs =
       check_runs_against_model(c, c.sweep.runs, c.source + ": key 'sweep.runs'", jobs);
-  if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
-                  [](const CampaignRun& r) { return r.method == "full"; }))
-    check_case_step_bound(c, "sweep");
-  // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
-  if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
-                  [](const CampaignRun& r) { return r.method != "full"; }))
-    check_dense_casing_fits(c, assemble_casing(c).n_dofs(), jobs);
+  {
+    const Casing casing = assemble_casing(c);
+    if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
+                    [](const CampaignRun& r) { return r.method == "full"; }))
+      check_case_step_bound(c, casing, "sweep");
+    // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
+    if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
+                    [](const CampaignRun& r) { return r.method != "full"; }))
+      check_dense_casing_fits(c, casing.n_dofs(), jobs);
+  }
   int inject = -1; // the speed index whose runs fail on purpose (tests only)
   if (const char* text = std::getenv("RSI_SWEEP_FAIL_SPEED")) inject = std::atoi(text);
 
