@@ -13,7 +13,9 @@
 //   bench_component_rubbing CASE [--revolutions R] [--steps-per-revolution N]
 //       [--methods macneal:10,cb:10,...] [--reference cb:20] [--response NODE.DIR]
 //       [--ccx-cache DIR] [--safety 0.9] [--csv PREFIX] [--omega W] [--mu MU] [--zeta Z]
-//       [--whole-w]
+//       [--whole-w] [--sliding with|against]
+// --sliding against: the tip slides against the rotation, NLstep's PLAUSIBLE
+// set-up (data/cases/rotor37-rubbing.json's tip_sliding); default with.
 // CB/CCM run at dt = T / (k N), k the smallest integer with dt <= safety x
 // 2/omega_max (their own stable step), sampled every k steps so that every
 // run is compared at the same N samples a revolution. e_2 = ||x - x_ref||_2 /
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
   std::string cache = "build/ccx-cache";
   std::string csv;
   bool whole_w = false; // --whole-w: Gauss-Seidel on the whole W every contact step
+  bool against = false;  // --sliding against
   double safety = 0.9, omega = 1344.0, mu = 0.15, gm = 0.356, zeta = 0.005;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -137,6 +140,14 @@ int main(int argc, char** argv) {
       zeta = std::stod(next());
     else if (a == "--whole-w")
       whole_w = true;
+    else if (a == "--sliding") {
+      const std::string v = next();
+      if (v != "with" && v != "against") {
+        std::fprintf(stderr, "--sliding: with or against, got %s\n", v.c_str());
+        return 2;
+      }
+      against = v == "against";
+    }
     else {
       std::fprintf(stderr, "unknown option %s\n", a.c_str());
       return 2;
@@ -162,7 +173,8 @@ int main(int argc, char** argv) {
   for (int d : component.boundary)
     if (nodes.empty() || nodes.back() != component.dofs[d].node)
       nodes.push_back(component.dofs[d].node);
-  const RigidCasing casing = rigid_casing_of(component, nodes, oval_casing_gap(gm), omega);
+  const RigidCasing casing =
+      rigid_casing_of(component, nodes, oval_casing_gap(gm), omega, against ? -omega : omega);
   // Response dof: NODE.DIR, default the first contact node's direction 2.
   int response_node = nodes.front(), response_dir = 2;
   if (!response.empty()) {

@@ -88,6 +88,7 @@ std::string rubbing_json(const RubbingModel& model) {
   j["gap_width"] = s.gap_width;
   j["friction_coefficient"] = s.friction_coefficient;
   j["rotation_speed"] = s.rotation_speed;
+  j["tip_sliding"] = s.sliding_against_rotation ? "against_rotation" : "with_rotation";
   j["revolutions"] = s.revolutions;
   j["full_revolutions"] = s.full_revolutions;
   j["steps_per_revolution"] = s.steps_per_revolution;

@@ -96,7 +96,8 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   gap.g0 = setup.gap;
   gap.width = setup.gap_width;
   const RigidCasing casing =
-      rigid_casing_of(model.component, model.contact_nodes, gap, setup.rotation_speed);
+      rigid_casing_of(model.component, model.contact_nodes, gap, setup.rotation_speed,
+                      setup.sliding_speed());
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
   if (model.component_case.damping.modal_ratio > 0.0)
@@ -155,7 +156,8 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
   const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
                                         : ImposedGap::constant(setup.gap);
   const RigidSurfaceContact law(rigid_surface_nodes(model.component, model.contact_nodes), gap,
-                                setup.rotation_speed, setup.friction_coefficient);
+                                setup.rotation_speed, setup.friction_coefficient,
+                                setup.sliding_speed());
   double omega_max = 0.0;
   try {
     omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
@@ -211,7 +213,7 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
                     " is not a dof of the model (a free node and direction 1..3)");
   model.response_name = "u_" + std::to_string(model.setup.response_node) + "_" +
                         std::to_string(model.setup.response_direction);
-  model.period = 2.0 * M_PI / model.setup.rotation_speed;
+  model.period = 2.0 * M_PI / std::abs(model.setup.rotation_speed);
   return model;
 }
 

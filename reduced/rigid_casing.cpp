@@ -15,9 +15,10 @@ namespace rsi {
 
 RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                          const std::vector<std::array<int, 3>>& boundary_index,
-                         const CasingGap& gap, double omega)
+                         const CasingGap& gap, double omega, double sliding_omega)
     : m_gap(gap)
-    , m_omega(omega) {
+    , m_omega(omega)
+    , m_sliding_omega(sliding_omega) {
   const std::string where = "RigidCasing: ";
   if (positions.size() != boundary_index.size())
     throw std::invalid_argument(where + "positions (" + std::to_string(positions.size()) +
@@ -25,6 +26,9 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                                 ") must have one entry per contact node");
   if (!std::isfinite(omega))
     throw std::invalid_argument(where + "omega = " + message_number(omega) +
+                                ", allowed a finite value");
+  if (!std::isfinite(sliding_omega))
+    throw std::invalid_argument(where + "sliding omega = " + message_number(sliding_omega) +
                                 ", allowed a finite value");
   if (!std::isfinite(gap.g0))
     throw std::invalid_argument(where + "gap g0 = " + message_number(gap.g0) + ", allowed finite");
@@ -83,7 +87,7 @@ double RigidCasing::imposed_gap(int c, double t) const {
 }
 
 RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
-                            const CasingGap& gap, double omega) {
+                            const CasingGap& gap, double omega, double sliding_omega) {
   const std::string where = "rigid_casing_of: ";
   std::unordered_map<int, int> boundary_slot; // dof -> index in component.boundary
   for (int k = 0; k < static_cast<int>(component.boundary.size()); ++k)
@@ -120,7 +124,7 @@ RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& 
     positions.push_back(node->x);
     index.push_back(slots);
   }
-  return RigidCasing(positions, index, gap, omega);
+  return RigidCasing(positions, index, gap, omega, sliding_omega);
 }
 
 } // namespace rsi

@@ -24,12 +24,16 @@
 //             theta = Omega t + phi_c, w = 0.15 (the README's oval casing:
 //             the gap closes to -g_m twice a revolution).
 //
-// Sliding. The blade turns at Omega counter-clockwise about e_z, so in the
-// blade's frame the casing moves at -r_c Omega e_t2. The slip increment of
-// node c over the step t_n -> t_{n+1}, relative to the casing, in the
-// tangent frame (t1, t2):
-//   s_c = [e_t1; e_t2] (u_c^{n+1} - u_c^n) + (0, r_c Omega dt)
-// (the node's displacement increment minus the casing's, -r_c Omega dt e_t2).
+// Sliding. A blade turning at Omega (signed, > 0 counter-clockwise about
+// e_z) sees the casing move at -r_c Omega e_t2. The casing's sliding speed
+// is kept apart from the gap phase: Omega_s = Omega in that physical case,
+// Omega_s = -Omega for NLstep's PLAUSIBLE set-up (gap phase Omega t + phi,
+// relative sliding of the tip -r Omega e_t2: its gap velocity
+// u_b' + (g', 0, -r Omega) in (n, t1, t2); shared/external/rotor37/README.md).
+// The slip increment of node c over the step t_n -> t_{n+1}, relative to
+// the casing, in the tangent frame (t1, t2):
+//   s_c = [e_t1; e_t2] (u_c^{n+1} - u_c^n) + (0, r_c Omega_s dt)
+// (the node's displacement increment minus the casing's, -r_c Omega_s dt e_t2).
 // Coulomb's law then opposes s_c: lambda_t = -mu lambda_n s_c/|s_c| in slip,
 // so a fast casing (r Omega dt >> the node's own increment) drags the node
 // along -e_t2 with lambda_t2 = -mu lambda_n.
@@ -61,13 +65,19 @@ class RigidCasing {
 public:
   /// `positions[c]`: node c's coordinates; `boundary_index[c]`: the index of
   /// its ux, uy, uz in the component's boundary list (the order of
-  /// ReducedBasis::boundary_position). omega: rotation speed [rad/s],
+  /// ReducedBasis::boundary_position). omega: rotation speed of the gap
+  /// phase [rad/s], finite, signed; sliding_omega: Omega_s of the header,
   /// finite (0: the casing does not slide). Throws std::invalid_argument
   /// for a node on the axis (r_c = 0), a gap out of range, sizes that do not
   /// match, or a repeated or negative boundary index.
   RigidCasing(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
-              double omega);
+              double omega, double sliding_omega);
+  /// The physical case: Omega_s = Omega.
+  RigidCasing(const std::vector<Eigen::Vector3d>& positions,
+              const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
+              double omega)
+      : RigidCasing(positions, boundary_index, gap, omega, omega) {}
 
   int n_contacts() const { return static_cast<int>(m_frame.size()); }
   /// Rows e_n, e_t1, e_t2 of contact c.
@@ -76,12 +86,13 @@ public:
   double radius(int c) const { return m_radius[c]; }
   double polar_angle(int c) const { return m_phi[c]; }
   double omega() const { return m_omega; }
+  double sliding_omega() const { return m_sliding_omega; }
   const CasingGap& gap_law() const { return m_gap; }
   /// g(t, phi_c) [length].
   double imposed_gap(int c, double t) const;
   /// The casing's displacement over a step of dt, in c's tangent frame,
-  /// negated: the (t1, t2) term added to the node's increment, (0, r_c Omega dt).
-  double casing_slip(int c, double dt) const { return m_radius[c] * m_omega * dt; }
+  /// negated: the (t1, t2) term added to the node's increment, (0, r_c Omega_s dt).
+  double casing_slip(int c, double dt) const { return m_radius[c] * m_sliding_omega * dt; }
 
 private:
   std::vector<Eigen::Matrix3d> m_frame;
@@ -90,14 +101,20 @@ private:
   std::vector<double> m_phi;
   CasingGap m_gap;
   double m_omega = 0.0;
+  double m_sliding_omega = 0.0;
 };
 
 /// The rigid casing over the contact nodes `node_ids` of a component whose
 /// boundary holds their ux, uy, uz (3D solid nodes, CalculiX directions
 /// 1..3). Throws std::invalid_argument naming the node when it has no
 /// coordinates, or one of its three translations is not a boundary dof.
+/// sliding_omega: Omega_s of the header (omega in the physical case).
 RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
-                            const CasingGap& gap, double omega);
+                            const CasingGap& gap, double omega, double sliding_omega);
+inline RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
+                                   const CasingGap& gap, double omega) {
+  return rigid_casing_of(component, node_ids, gap, omega, omega);
+}
 
 /// The rotor37 README's oval casing: g_m = 0.356 mm, w = 0.15.
 inline CasingGap oval_casing_gap(double g_m = 0.356) {

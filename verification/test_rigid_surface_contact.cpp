@@ -261,6 +261,57 @@ TEST(RigidSurfaceContact, OneStepSlipDragsNodeWithCasing) {
   EXPECT_GT(tangential.dot(law.casing_velocity(0)), 0.0);
 }
 
+// The rotation direction (data/README.md rubbing.rotation_speed and
+// tip_sliding): a node at rest slides by +r Omega_s dt along e_t2 with
+// Omega_s = Omega (with the rotation) or -Omega (against it, NLstep's
+// PLAUSIBLE set-up); the gap phase is Omega t + phi for either sign of
+// Omega. Source: the header's s~ and g0 formulas; tolerances as in
+// StepGapSlipAndRows (r Omega dt: 2 eps relative; theta: exact inputs).
+TEST(RigidSurfaceContact, RotationDirectionAndSlidingSign) {
+  const double omega = 1344.0, dt = 2 * M_PI / omega / 1000;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(3 * static_cast<int>(positions().size()));
+  FrictionalContactGeometry geo;
+  struct Case {
+    double omega, sliding, sign; // sign of the expected s~_t2 / (r |Omega| dt)
+    const char* name;
+  };
+  const Case cases[] = {{omega, omega, +1.0, "counter-clockwise, with the rotation"},
+                        {omega, -omega, -1.0, "counter-clockwise, against (NLstep)"},
+                        {-omega, -omega, -1.0, "clockwise, with the rotation"},
+                        {-omega, omega, +1.0, "clockwise, against"}};
+  for (const Case& k : cases) {
+    const RigidSurfaceContact law(nodes_at(positions()), ImposedGap::constant(0.05), k.omega, 0.15,
+                                  k.sliding);
+    EXPECT_EQ(law.sliding_speed(), k.sliding);
+    law.evaluate(zero, zero, 1.0, dt, geo);
+    for (int c = 0; c < law.n_contacts(); ++c) {
+      const ContactFrame& f = law.frame(c);
+      const double expected = k.sign * f.radius * omega * dt;
+      EXPECT_LE(std::abs(geo.slip(2 * c + 1) - expected), 2 * eps * std::abs(expected)) << k.name;
+      EXPECT_LE((law.casing_velocity(c) * dt + expected * f.tangent2).norm(),
+                4 * eps * std::abs(expected))
+          << k.name;
+    }
+    std::printf("%s: node 0 at rest slides s~_t2 = %+.17g mm a step\n", k.name, geo.slip(1));
+  }
+  // Gap phase theta = Omega t + phi: the oval's minimum -g_m at theta = pi/2
+  // is met at t = (pi/2 - phi)/Omega for Omega > 0 and at (-pi/2 - phi)/Omega
+  // for Omega < 0 (theta = -pi/2 = pi/2 mod pi), whatever Omega_s.
+  const double gm = 0.356;
+  for (double w : {omega, -omega})
+    for (double sliding : {w, -w}) {
+      const RigidSurfaceContact law(nodes_at(positions()), ImposedGap::oval(gm), w, 0.15, sliding);
+      for (int c = 0; c < law.n_contacts(); ++c) {
+        const double phi = law.frame(c).angle;
+        const double t = (w > 0 ? M_PI / 2 - phi : -M_PI / 2 - phi) / w + 2 * M_PI / omega;
+        // theta rounded in t, Omega t, + phi (3 eps |theta| <= 3 eps 12):
+        // x = (mod/pi - 1/2)/w moves by 36 eps/(pi 0.15); g - (-g_m) =
+        // 2 g_m (1 - exp(-x^2)) <= 2 g_m x^2: far below 1e-20.
+        EXPECT_NEAR(law.imposed_gap(c, t), -gm, 1e-20 + 8 * eps * gm) << "Omega " << w;
+      }
+    }
+}
+
 TEST(RigidSurfaceContact, RejectsBadArguments) {
   const std::vector<Eigen::Vector3d> x = {{250.0, 10.0, 0.0}};
   EXPECT_THROW(RigidSurfaceContact({}, ImposedGap::constant(0.1), 1.0, 0.1), std::invalid_argument);
@@ -274,6 +325,8 @@ TEST(RigidSurfaceContact, RejectsBadArguments) {
   EXPECT_THROW(RigidSurfaceContact(nodes_at(x), ImposedGap::constant(NAN), 1.0, 0.1),
                std::invalid_argument);
   EXPECT_THROW(RigidSurfaceContact(nodes_at(x), ImposedGap::constant(0.1), INFINITY, 0.1),
+               std::invalid_argument);
+  EXPECT_THROW(RigidSurfaceContact(nodes_at(x), ImposedGap::constant(0.1), 1.0, 0.1, NAN),
                std::invalid_argument);
   EXPECT_THROW(RigidSurfaceContact(nodes_at(x), ImposedGap::constant(0.1), 1.0, -0.1),
                std::invalid_argument);

@@ -30,11 +30,12 @@ double ImposedGap::operator()(double theta) const {
 }
 
 RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap,
-                                         double omega, double mu)
+                                         double omega, double mu, double sliding_omega)
     : m_nodes(std::move(nodes))
     , m_gap(gap)
     , m_omega(omega)
-    , m_mu(mu) {
+    , m_mu(mu)
+    , m_sliding_omega(sliding_omega) {
   const std::string where = "RigidSurfaceContact: ";
   if (m_nodes.empty())
     throw std::invalid_argument(where + "nodes is empty, allowed at least one contact node");
@@ -51,6 +52,9 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, co
   }
   if (!std::isfinite(omega))
     throw std::invalid_argument(where + "omega = " + str(omega) + ", allowed finite");
+  if (!std::isfinite(sliding_omega))
+    throw std::invalid_argument(where + "sliding omega = " + str(sliding_omega) +
+                                ", allowed finite");
   if (!(std::isfinite(mu) && mu >= 0.0))
     throw std::invalid_argument(where + "mu = " + str(mu) + ", allowed [0, inf)");
   std::set<int> seen;
@@ -88,7 +92,7 @@ double RigidSurfaceContact::imposed_gap(int contact, double t) const {
 
 Eigen::Vector3d RigidSurfaceContact::casing_velocity(int contact) const {
   const ContactFrame& f = m_frames.at(contact);
-  return (-f.radius * m_omega) * f.tangent2;
+  return (-f.radius * m_sliding_omega) * f.tangent2;
 }
 
 std::vector<int> RigidSurfaceContact::dofs_read(int n_dofs) const {
@@ -135,7 +139,7 @@ void RigidSurfaceContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& curr
     }
     out.normal_gap(c) = imposed_gap(c, t_next) + f.normal.dot(u_next);
     out.slip(2 * c) = f.tangent1.dot(increment);
-    out.slip(2 * c + 1) = f.tangent2.dot(increment) + f.radius * m_omega * dt;
+    out.slip(2 * c + 1) = f.tangent2.dot(increment) + f.radius * m_sliding_omega * dt;
     const Eigen::Vector3d* directions[3] = {&f.normal, &f.tangent1, &f.tangent2};
     for (int i = 0; i < 3; ++i) {
       SparseRow& row = out.rows[3 * c + i];

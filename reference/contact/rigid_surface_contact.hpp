@@ -10,7 +10,7 @@
 //            e_t1 = (0, 0, 1)         (axial)
 //            e_t2 = e_n x e_t1 = (-sin phi, cos phi, 0)
 //            (e_n, e_t1, e_t2) orthonormal and right-handed; e_t2 points
-//            along the rotation for Omega > 0.
+//            along a counter-clockwise rotation about z.
 //   gap      g_c(t, u) = g0_c(t) + e_n . u_c        (> 0 open)
 //            g0 constant, or the oval casing of the README:
 //            g0(t) = g_m (1 - 2 exp(-((mod(theta, pi)/pi - 1/2)/w)^2)),
@@ -18,13 +18,20 @@
 //            w = 0.15; period pi/Omega in t, minimum -g_m at
 //            mod(theta, pi) = pi/2, g_m (1 - 2 exp(-1/(4 w^2))) at the ends.
 //            Moving the node by u_c along e_n increases g by |u_c|: opens.
-//   casing   velocity -r Omega e_t2 (the casing slides past the tip
-//            backwards), so over a step of dt it moves by -r Omega dt e_t2.
+//   casing   velocity -r Omega_s e_t2 past the tip, so over a step of dt
+//            it moves by -r Omega_s dt e_t2. Omega (signed: > 0
+//            counter-clockwise) sets the gap phase, Omega_s the sliding:
+//            Omega_s = Omega for a casing at rest in a rotor turning at
+//            Omega (the physical case: phase and sliding of one rotation);
+//            Omega_s = -Omega reproduces NLstep's PLAUSIBLE set-up, whose
+//            gap phase turns counter-clockwise while its tip slides
+//            clockwise (gamma = u_b' + (g', 0, -r Omega) in (n, t1, t2),
+//            shared/external/rotor37/README.md).
 // For the step t_n -> t_{n+1} = t_next, with u_n and the prediction u~:
 //   g~_c = g0_c(t_{n+1}) + e_n . u~_c
-//   s~_c = (e_t1 . (u~_c - u_n,c),  e_t2 . (u~_c - u_n,c) + r Omega dt)
+//   s~_c = (e_t1 . (u~_c - u_n,c),  e_t2 . (u~_c - u_n,c) + r Omega_s dt)
 //          (the node's tangential increment relative to the casing: a node
-//          at rest slides by +r Omega dt along e_t2)
+//          at rest slides by +r Omega_s dt along e_t2)
 //   B_c  = rows e_n^T, e_t1^T, e_t2^T on the node's dofs (ux, uy, uz),
 // exact (the law is linear in u): g and s of u_{n+1} = u~ + du are g~ + G du
 // and s~ + T du. Small displacements: frame, radius and angle are those of
@@ -34,6 +41,7 @@
 // its data.
 
 #include <array>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -75,9 +83,14 @@ public:
   /// nodes: at least one; dofs >= 0 and all distinct; positions finite with
   /// r > 0. gap: constant finite, or oval with g_m > 0 and width > 0 finite.
   /// omega finite (any sign; 0: no sliding, constant oval). mu >= 0 finite.
-  /// Throws std::invalid_argument naming the parameter and its range.
+  /// sliding_omega: Omega_s of the header, finite. Throws
+  /// std::invalid_argument naming the parameter and its range.
   RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap, double omega,
-                      double mu);
+                      double mu, double sliding_omega);
+  /// The physical case, Omega_s = Omega.
+  RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap, double omega,
+                      double mu)
+      : RigidSurfaceContact(std::move(nodes), gap, omega, mu, omega) {}
 
   int n_contacts() const override { return static_cast<int>(m_nodes.size()); }
   int n_tangents() const override { return 2; }
@@ -95,9 +108,10 @@ public:
   const RigidSurfaceNode& node(int contact) const { return m_nodes.at(contact); }
   /// g0_c(t), the gap at zero displacement.
   double imposed_gap(int contact, double t) const;
-  /// The casing's velocity at the node, -r Omega e_t2.
+  /// The casing's velocity at the node, -r Omega_s e_t2.
   Eigen::Vector3d casing_velocity(int contact) const;
   double rotation_speed() const { return m_omega; }
+  double sliding_speed() const { return m_sliding_omega; }
 
 private:
   std::vector<RigidSurfaceNode> m_nodes;
@@ -105,6 +119,7 @@ private:
   ImposedGap m_gap;
   double m_omega;
   double m_mu;
+  double m_sliding_omega;
 };
 
 /// The contact nodes `node_ids` of a 3D component (dof kinds ux, uy, uz,

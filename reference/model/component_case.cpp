@@ -158,7 +158,19 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
   }
   gap.finish();
   out.friction_coefficient = r.number("friction_coefficient", {0.0, 2.0, false, false, ""});
-  out.rotation_speed = r.number("rotation_speed", {0.0, 1e5, true, false, "rad/s"});
+  out.rotation_speed = r.number("rotation_speed", {-1e5, 1e5, false, false, "rad/s"});
+  if (out.rotation_speed == 0.0)
+    r.fail(r.full("rotation_speed"), "must be nonzero, in [-100000, 100000] rad/s (its sign is "
+                                     "the rotation direction about rotation_axis: > 0 "
+                                     "counter-clockwise), got 0");
+  r.claim("tip_sliding");
+  if (object.contains("tip_sliding")) {
+    const std::string sliding = string_value(r, object, "tip_sliding");
+    if (sliding != "with_rotation" && sliding != "against_rotation")
+      r.fail(r.full("tip_sliding"),
+             "must be \"with_rotation\" or \"against_rotation\", got \"" + sliding + "\"");
+    out.sliding_against_rotation = sliding == "against_rotation";
+  }
   out.revolutions = r.number("revolutions", {0.0, 1e5, true, false, ""});
   out.steps_per_revolution = r.integer("steps_per_revolution", 1, 100000000);
   r.claim("output_every");

@@ -64,7 +64,18 @@ struct RubbingSetup {
   double gap = 0.0;                 ///< oval: g_m > 0; constant: g0 [length]
   double gap_width = 0.15;          ///< oval: w in (0, 1)
   double friction_coefficient = 0.0;
-  double rotation_speed = 0.0;      ///< Omega > 0 [rad/s]
+  /// Omega [rad/s], signed about rotation_axis: > 0 counter-clockwise,
+  /// < 0 clockwise; never 0. The gap phase is theta = Omega t + phi.
+  double rotation_speed = 0.0;
+  /// How the tip slides over the casing: with the rotation (the casing
+  /// moves at -r Omega e_t2 past a tip at rest, the physical case), or
+  /// against it (NLstep's PLAUSIBLE set-up: the tip moves at -r Omega e_t2
+  /// relative to the casing while its gap phase is Omega t + phi; see
+  /// shared/external/rotor37/README.md).
+  bool sliding_against_rotation = false;
+  /// Omega_s, the casing's sliding speed past the tip (-r Omega_s e_t2):
+  /// Omega with the rotation, -Omega against it.
+  double sliding_speed() const { return sliding_against_rotation ? -rotation_speed : rotation_speed; }
   double revolutions = 0.0;         ///< length of a run, > 0
   int steps_per_revolution = 0;     ///< N: samples a revolution (MacNeal's step T/N)
   int output_every = 1;             ///< a history row every this many samples
