@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # history.csv and summary.json of a Coulomb run (issue 12 item 2): the
-# default case shortened to 5 ms (contact from 3.96 ms) with
-# operating_point.friction_law "coulomb" has the columns lambda_t_1..22 after
+# default case shortened to 5 ms (contact from 3.96 ms), whose Coulomb law
+# is the default (no operating_point.friction_law key), has the columns lambda_t_1..22 after
 # lambda_22, and on every row |lambda_t_k| <= mu lambda_k up to the solver's
 # stopping test ((1 + mu) eta Lambda, eta = 4 (m + 1) eps, m <= 44 unknowns,
 # Lambda <= the row's largest multiplier; the file's 17 digits round each
 # value by 1e-17 relative, far below). The same case with the sliding_sign
-# law (the key absent) has no lambda_t column. simulate prints the
+# law (named) has no lambda_t column. simulate prints the
 # certificate line for the Coulomb run only.
 # Usage: coulomb_history_columns.sh RSI SOURCE_DIR
 set -u
@@ -16,9 +16,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 py=/usr/bin/python3
 $py "$src/verification/case_variant.py" "$src/data/cases/batailly2007.json" "$work/short.json" time.duration=0.005
-$py "$src/verification/case_variant.py" "$work/short.json" "$work/coulomb.json" 'operating_point.friction_law="coulomb"'
-"$rsi" simulate "$work/short.json" --out "$work/sliding" >"$work/sliding.log" 2>&1 || { echo "FAIL sliding_sign run"; cat "$work/sliding.log"; exit 1; }
-"$rsi" simulate "$work/coulomb.json" --out "$work/coulomb" >"$work/coulomb.log" 2>&1 || { echo "FAIL coulomb run"; cat "$work/coulomb.log"; exit 1; }
+$py "$src/verification/case_variant.py" "$work/short.json" "$work/sliding.json" 'operating_point.friction_law="sliding_sign"'
+"$rsi" simulate "$work/sliding.json" --out "$work/sliding" >"$work/sliding.log" 2>&1 || { echo "FAIL sliding_sign run"; cat "$work/sliding.log"; exit 1; }
+"$rsi" simulate "$work/short.json" --out "$work/coulomb" >"$work/coulomb.log" 2>&1 || { echo "FAIL coulomb (default) run"; cat "$work/coulomb.log"; exit 1; }
 failures=0
 if grep -q "coulomb certificate" "$work/sliding.log"; then echo "FAIL sliding_sign run prints a coulomb certificate"; failures=$((failures + 1)); fi
 if ! grep -q "coulomb certificate: max cone violation" "$work/coulomb.log"; then echo "FAIL coulomb run prints no certificate"; failures=$((failures + 1)); fi

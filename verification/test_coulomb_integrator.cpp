@@ -327,10 +327,11 @@ Counts counts(Case c, FrictionLaw law, double dt) {
 // by N itself, far above it.
 TEST(CoulombIntegrator, DefaultCaseAtRestTransitionsConverge) {
   const Case c = default_case();
+  // The case file names no friction_law: the default law is Coulomb's.
+  ASSERT_EQ(c.operating_point.friction_law, FrictionLaw::coulomb);
+  const FrictionLaw law = c.operating_point.friction_law;
   const double dt = c.time.step;
-  const Counts coulomb[3] = {counts(c, FrictionLaw::coulomb, dt),
-                             counts(c, FrictionLaw::coulomb, dt / 2),
-                             counts(c, FrictionLaw::coulomb, dt / 4)};
+  const Counts coulomb[3] = {counts(c, law, dt), counts(c, law, dt / 2), counts(c, law, dt / 4)};
   const Counts sliding[3] = {counts(c, FrictionLaw::sliding_sign, dt),
                              counts(c, FrictionLaw::sliding_sign, dt / 2),
                              counts(c, FrictionLaw::sliding_sign, dt / 4)};

@@ -34,7 +34,8 @@ struct StreamedCsv {
   int rows = 0;
   HistorySink sink() {
     return [this](const HistoryRow& row) {
-      if (rows++ == 0) csv = history_csv_header(static_cast<int>(row.gap.size()));
+      if (rows++ == 0)
+        csv = history_csv_header(static_cast<int>(row.gap.size()), history_csv_tangents(row));
       append_history_csv_row(csv, row);
     };
   }

@@ -311,9 +311,9 @@ Case parse_case(const json& document, const std::string& source) {
   op.claim("friction_law");
   if (document.at("operating_point").contains("friction_law")) {
     const json& law = document.at("operating_point").at("friction_law");
-    if (law == "coulomb")
-      c.operating_point.friction_law = FrictionLaw::coulomb;
-    else if (law != "sliding_sign")
+    if (law == "sliding_sign")
+      c.operating_point.friction_law = FrictionLaw::sliding_sign;
+    else if (law != "coulomb")
       op.fail("operating_point.friction_law",
               "must be \"sliding_sign\" or \"coulomb\", got " + law.dump());
   }

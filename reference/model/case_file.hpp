@@ -66,9 +66,10 @@ enum class FrictionLaw {
 struct OperatingPoint {
   double rotation_speed = 0.0;       ///< Omega [rad/s], counter-clockwise
   double friction_coefficient = 0.0; ///< mu [-]
-  /// "friction_law": "sliding_sign" (absent: the first round's behaviour,
-  /// with which the stored thresholds were measured) or "coulomb".
-  FrictionLaw friction_law = FrictionLaw::sliding_sign;
+  /// "friction_law": "coulomb" (also when absent: stick and slip) or
+  /// "sliding_sign" (the first version's law, kept by name for the paper's
+  /// comparison; it chatters where the sliding speed vanishes).
+  FrictionLaw friction_law = FrictionLaw::coulomb;
 };
 
 /// Radial nodal forces amplitude * cos(nodal_diameter * theta_j) on every
