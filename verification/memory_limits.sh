@@ -21,8 +21,12 @@
 # limit fails OpenBLAS's and libgomp's reservations first, and those
 # libraries hang or exit without a status (heap_limit.c says which).
 #
-# Commands: `rsi campaign` of the paper's case (the reference and 21
-# reduced runs on 2 threads), `rsi simulate` (full, CB-10), `rsi modes`,
+# Commands: `rsi campaign` of the paper's case shortened to 5 ms, with
+# one reduced run of each kind the case's campaign holds (Guyan, CB, CCM,
+# the families, forced and participation selections, a reduced casing, a
+# run at its own step: 8 runs and the reference on 2 threads; the whole
+# 164-run list repeats the same allocations 20 times over and made this
+# the longest test of the suite), `rsi simulate` (full, CB-10), `rsi modes`,
 # `rsi reduce` (CCM-20), on the paper's case and on a refined one (casing
 # n_elements 1000, 4,000 dofs: allocations of up to 131 MB, the reduced
 # integrator's dense casing-plus-basis matrix), and a short
@@ -60,6 +64,7 @@ variant() { # NAME BASE KEY=JSON...
 }
 paper=$src/data/cases/batailly2007.json
 variant short "$paper" time.duration=0.005
+variant short_campaign "$work/short.json" 'campaign=[{"method": "guyan", "modes": [0]}, {"method": "cb", "modes": [10]}, {"method": "ccm", "modes": [20]}, {"method": "cb", "modes": [44], "selection": "families"}, {"method": "ccm", "modes": [44], "selection": "forced"}, {"method": "cb", "modes": [44], "selection": "participation"}, {"method": "ccm", "modes": [44], "casing_modes": [20]}, {"method": "cb", "modes": [44], "casing_modes": [40], "time_step": ["own"]}]'
 variant refined "$paper" time.step=1e-8 time.duration=1e-5 time.output_every=10 casing.n_elements=1000 'campaign=[{"method": "cb", "modes": [10]}]'
 
 failures=0
@@ -162,7 +167,7 @@ sweep() {
 # AddressSanitizer (single allocations only) they add nothing but time.
 campaign_limits="1 2 4 8 16 32 64 128 256"
 [ "$mode" = preload ] && campaign_limits="1 2 4 5 6 7 8 16 32 64 128 256"
-limits=$campaign_limits sweep "campaign" "$work/campaign" "$rsi" campaign "$work/short.json" --no-report
+limits=$campaign_limits sweep "campaign" "$work/campaign" "$rsi" campaign "$work/short_campaign.json" --no-report
 sweep "simulate full" "$work/simulate-full" "$rsi" simulate "$work/short.json" --method full
 sweep "simulate cb-10" "$work/simulate-cb" "$rsi" simulate "$work/short.json" --method cb --modes 10
 sweep "modes" "$work/modes" "$rsi" modes "$paper" --count 20
