@@ -17,9 +17,8 @@
 //     an optional point, an optional exponent (E, D or Q then an optional
 //     sign and digits, or a sign and digits alone: "1.5+2" is 150); an
 //     empty mantissa reads as 0 (".", "+", "e5"), as gfortran reads it.
-// Checked against ccx 2.20 by hand (the reading of ".", "1.5+2", "1.5q2",
-// a 21-character coordinate, "1 2"); the decks are in the commit message
-// of the change that introduced this file.
+// Each reading checked by running ccx 2.20 on a one-element deck holding
+// it (verification/test_calculix_deck.cpp lists them).
 
 #include <cstdint>
 #include <optional>

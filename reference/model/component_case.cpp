@@ -387,11 +387,17 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                               [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
         throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
                           std::to_string(id) + " is not a node of the deck " + source);
-    const std::string job = c.calculix_matrices.empty()
-                                ? calculix_matrices(deck, options.ccx_cache)
-                                : c.calculix_matrices;
-    component = read_calculix_component(job, deck,
-                                        boundary, c.name);
+    const bool ran_ccx = c.calculix_matrices.empty();
+    const std::string job = ran_ccx ? calculix_matrices(deck, options.ccx_cache) : c.calculix_matrices;
+    try {
+      component = read_calculix_component(job, deck, boundary, c.name);
+    } catch (const ImportError& e) {
+      // A defect of the files rsi had ccx write (a zero mass on a dof ccx
+      // made, say) is the deck's: say so before the cache file's name.
+      if (!ran_ccx || std::string(e.what()).rfind(job, 0) != 0) throw;
+      throw ImportError(source + ": the matrices ccx wrote for this deck (in --ccx-cache " +
+                        options.ccx_cache + ") are not a component: " + e.what());
+    }
   }
   component.units = c.units;
   component.rotation_axis = c.rotation_axis;
