@@ -2,7 +2,7 @@
 # needs when any is missing (apt-get; as root, or through sudo).
 rsi_packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev liblapacke-dev libgsl-dev
   libgtest-dev libspectra-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-matplotlib
-  python3-scipy python3-numpy calculix-ccx gmsh libopenblas0-pthread libopenblas-dev
+  python3-scipy python3-numpy calculix-ccx calculix-ccx-test gmsh libopenblas0-pthread libopenblas-dev
   libopenmpi-dev openmpi-bin)
 
 rsi_install_dependencies() {

@@ -30,7 +30,10 @@ std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
   csv.precision(17);
   csv << "node,x,y,z\n";
   for (const ComponentNode& node : nodes)
-    csv << node.id << "," << node.x(0) << "," << node.x(1) << "," << node.x(2) << "\n";
+    if (node.generated) // no position: empty coordinates (data/README.md)
+      csv << node.id << ",,,\n";
+    else
+      csv << node.id << "," << node.x(0) << "," << node.x(1) << "," << node.x(2) << "\n";
   return stream_text(csv);
 }
 

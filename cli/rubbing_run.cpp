@@ -202,6 +202,33 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
     for (int d : comp.boundary)
       if (model.contact_nodes.empty() || model.contact_nodes.back() != comp.dofs[d].node)
         model.contact_nodes.push_back(comp.dofs[d].node);
+  // A contact or response node is one point with one dof per direction: a
+  // node ccx created, or a beam, shell or plane node it expanded into
+  // several (a row per expanded node and direction), is not.
+  const auto rows_of = [&comp](int node, const std::string& kind) {
+    int rows = 0;
+    for (const DofInfo& d : comp.dofs)
+      rows += d.node == node && d.kind == kind;
+    return rows;
+  };
+  const auto check_point = [&](int node, const std::string& key) {
+    const auto at = std::find_if(comp.nodes.begin(), comp.nodes.end(),
+                                 [node](const ComponentNode& n) { return n.id == node; });
+    if (at != comp.nodes.end() && at->generated)
+      throw CaseError(c.case_path + ": key '" + key + "': node " + std::to_string(node) +
+                      " is a node ccx created (no position in the deck); name a node of the deck");
+    for (const char* kind : {"ux", "uy", "uz"})
+      if (rows_of(node, kind) > 1)
+        throw CaseError(c.case_path + ": key '" + key + "': node " + std::to_string(node) +
+                        " has " + std::to_string(rows_of(node, kind)) + " rows of " + kind +
+                        ": ccx expanded it (a node of a beam, shell or plane element) into as "
+                        "many nodes; a contact or response node must be a node of a solid "
+                        "element (one row per direction)");
+  };
+  for (int node : model.contact_nodes)
+    check_point(node, model.setup.contact_nodes.empty() ? "component.boundary"
+                                                         : "rubbing.contact_nodes");
+  check_point(model.setup.response_node, "rubbing.response");
   const std::string kind = direction_kind(model.setup.response_direction);
   for (int i = 0; i < comp.n_dofs(); ++i)
     if (comp.dofs[i].node == model.setup.response_node && comp.dofs[i].kind == kind)

@@ -319,6 +319,7 @@ expect 2 "campaign[0].method': must be \"cb\", \"ccm\" or \"guyan\"" -- "$rsi" c
 # the matrices ccx would have written (calculix_matrices), so no ccx runs.
 mkdir -p "$work/ccx"
 printf '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\n2\n' >"$work/ccx/deck.inp"
+printf '*NODE, NSET=NALL\n1, 5., 0., 0.\n2, 6., 0., 0.\n*NSET, NSET=TIP\n1\n' >"$work/ccx/other.inp"
 good_dof='1.1\n1.2\n1.3\n2.1\n2.2\n2.3\n'
 good_sti='1 1 4.0\n1 4 -1.0\n2 2 4.0\n3 3 4.0\n4 4 2.0\n5 5 2.0\n6 6 2.0\n'
 good_mas='1 1 1.0\n2 2 1.0\n3 3 1.0\n4 4 1.0\n5 5 1.0\n6 6 1.0\n'
@@ -378,6 +379,40 @@ for cmd in modes export reduce; do
 done
 expect 2 "--part: the case $work/ccx-good.json has one component, 'tiny', got 'casing'" -- "$rsi" modes "$work/ccx-good.json" --part casing --out "$work/out"
 
+# A case naming stored matrices (calculix_matrices) and a --source deck:
+# refused naming both, never that deck's nodes and sets with the other
+# deck's matrices (they were mixed silently). Likewise a gmsh_blade case,
+# whose blade deck --source would replace while its boundary stayed TIP.
+for cmd in modes export reduce; do
+  extra=()
+  [ "$cmd" = reduce ] && extra=(--method cb)
+  expect 2 "key 'component.source.calculix_matrices': the case reads the matrices $work/ccx/good.{sti,mas,dof} of a ccx run of $work/ccx/deck.inp, and --source names the deck $work/ccx/other.inp" -- "$rsi" "$cmd" "$work/ccx-good.json" "${extra[@]}" --source "$work/ccx/other.inp" --out "$work/out"
+  expect 2 "key 'component.source.gmsh_blade': the case builds its blade deck from these parameters, and --source names $work/ccx/deck.inp" -- "$rsi" "$cmd" "$src/data/cases/blade3d.json" "${extra[@]}" --source "$work/ccx/deck.inp" --out "$work/out"
+done
+
+# Decks read as ccx reads them (reference/model/calculix_deck.hpp): what ccx
+# refuses, crashes on or silently misreads is refused with file, line and
+# keyword. Each names matrices, so no ccx runs. The GENERATE near the
+# integer limit looped forever (32-bit overflow): here it must end, under
+# a 60 s timeout.
+deck_variant() { # NAME DECK_TEXT
+  printf "$2" >"$work/ccx/$1.inp"
+  printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/%s.inp", "calculix_matrices": "ccx/good"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"}}\n' \
+    "$1" >"$work/deck-$1.json"
+}
+deck_variant generate '*NODE, NSET=NALL\n1, 0., 0., 0.\n2147483647, 1., 0., 0.\n*NSET, NSET=TIP, GENERATE\n2147483600, 2147483647, 1000\n'
+deck_variant forward '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\nEND\n*NSET, NSET=END\n2\n'
+deck_variant node-zero '*NODE, NSET=NALL\n1, 0., 0., 0.\n0, 1., 0., 0.\n'
+deck_variant long-coordinate '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, -1.23456789012345E+02, 0., 0.\n'
+deck_variant empty-field '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\n1,,2\n'
+deck_variant include '*INCLUDE, INPUT=nowhere/mesh.inp\n'
+expect 2 "key 'component.boundary': boundary node 2147483600 is not a node of the deck $work/ccx/generate.inp" -- timeout 60 "$rsi" modes "$work/deck-generate.json" --out "$work/out"
+expect 2 "ccx/forward.inp:5: *NSET TIP names the node set END before it is defined ($work/ccx/forward.inp:6): ccx reads that name as an empty set" -- "$rsi" modes "$work/deck-forward.json" --out "$work/out"
+expect 2 "ccx/node-zero.inp:3: *NODE: node id 0" -- "$rsi" modes "$work/deck-node-zero.json" --out "$work/out"
+expect 2 "ccx/long-coordinate.inp:3: *NODE: a coordinate '-1.23456789012345E+02' has more than 20 characters: ccx reads only its first 20 ('-1.23456789012345E+0')" -- "$rsi" modes "$work/deck-long-coordinate.json" --out "$work/out"
+expect 2 "ccx/empty-field.inp:5: *NSET: an empty field between two commas" -- "$rsi" modes "$work/deck-empty-field.json" --out "$work/out"
+expect 2 "ccx/include.inp:1: *INCLUDE: the file '$work/ccx/nowhere/mesh.inp' does not exist" -- "$rsi" modes "$work/deck-include.json" --out "$work/out"
+
 # Rubbing runs of a component case (issue 12): every key of "rubbing" named.
 rubbing_variant() { # NAME RUBBING_JSON [COMPONENT_EXTRA]
   printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/good"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"%s}, "rubbing": %s}\n' \
@@ -398,6 +433,16 @@ rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
 rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
 rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
 expect 2 "key 'rubbing': missing (a contact run of a component needs" -- "$rsi" simulate "$work/ccx-good.json" --out "$work/out"
+# A contact node ccx expanded (a beam, shell or plane node: a row per
+# expanded node and direction) and a response node ccx created (above the
+# deck's largest id): neither is one point with one dof per direction
+# (the contact took the last row of each direction, silently).
+ccx_variant expanded '1.1\n1.2\n1.3\n2.1\n2.2\n2.3\n2.1\n2.2\n2.3\n' "${good_sti}7 7 1.0\n8 8 1.0\n9 9 1.0\n" "${good_mas}7 7 1.0\n8 8 1.0\n9 9 1.0\n"
+ccx_variant created "${good_dof}3.1\n" "${good_sti}7 7 1.0\n" "${good_mas}7 7 1.0\n"
+printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/expanded"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"}, "rubbing": {%s, "friction_coefficient": 0.1}}\n' "$rub" >"$work/rubbing-expanded.json"
+printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/created"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"}, "rubbing": {%s, "friction_coefficient": 0.1}}\n' "${rub/\"node\": 2/\"node\": 3}" >"$work/rubbing-created.json"
+expect 2 "key 'component.boundary': node 2 has 2 rows of ux: ccx expanded it" -- "$rsi" simulate "$work/rubbing-expanded.json" --out "$work/out"
+expect 2 "key 'rubbing.response': node 3 is a node ccx created (no position in the deck)" -- "$rsi" simulate "$work/rubbing-created.json" --out "$work/out"
 expect 2 "key 'rubbing.friction_coefficient': must be in [0, 2], got 3" -- "$rsi" simulate "$work/rubbing-mu.json" --out "$work/out"
 expect 2 "key 'rubbing.gap': must be {\"oval\": {\"g_m\": .., \"width\": ..}} or {\"constant\": g0}" -- "$rsi" simulate "$work/rubbing-gap.json" --out "$work/out"
 expect 2 "key 'rubbing.gap.oval.width': must be in (0, 1), got 1.5" -- "$rsi" simulate "$work/rubbing-width.json" --out "$work/out"

@@ -1,57 +1,26 @@
 #include "calculix_deck.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
+#include "calculix_fields.hpp"
 #include "coordinate_entries.hpp"
 #include "stream_text.hpp"
 
 namespace rsi {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string u(s);
-  for (char& c : u)
-    c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return u;
-}
+namespace fs = std::filesystem;
 
-std::string trim(std::string_view s) {
-  size_t a = 0;
-  size_t b = s.size();
-  while (a < b && std::isspace(static_cast<unsigned char>(s[a])))
-    ++a;
-  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1])))
-    --b;
-  return std::string(s.substr(a, b - a));
-}
-
-std::vector<std::string> split_commas(std::string_view line) {
-  std::vector<std::string> fields;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos
-                                                                          : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return fields;
-}
-
-/// Value of PARAM=value on a keyword line (upper-cased), empty if absent.
-std::string parameter(const std::vector<std::string>& fields, const std::string& name) {
-  for (size_t i = 1; i < fields.size(); ++i) {
-    const size_t eq = fields[i].find('=');
-    if (eq != std::string::npos && upper(trim(fields[i].substr(0, eq))) == name)
-      return trim(fields[i].substr(eq + 1));
-  }
-  return {};
-}
+/// ccx's limit on nested *INCLUDE (readinput.c: 10 open files).
+constexpr int kIncludeDepth = 9;
+/// The most ids one GENERATE line may add (400 MB of ids): a bound on
+/// memory, far above any deck's node count.
+constexpr std::int64_t kGenerateIds = 100000000;
 
 /// A deck line with where it came from, for messages.
 struct Where {
@@ -60,60 +29,276 @@ struct Where {
   std::string text() const { return file + ":" + std::to_string(line); }
 };
 
+/// A significant line (not blank, not a comment, not heading text).
 struct Line {
-  std::string text;
+  CalculixLine text;
   Where where;
 };
 
-/// The model part of `path` as lines, includes inlined; stops at *STEP.
-bool collect_lines(const std::filesystem::path& path, std::vector<Line>& out, int depth) {
-  if (depth > 16)
-    throw ImportError(path.string() + ": *INCLUDE nested more than 16 deep (a cycle?)");
-  const std::string text = read_whole_file(path.string());
-  size_t offset = 0;
-  std::string_view raw;
-  int number = 0;
-  while (next_line(text, offset, raw)) {
-    ++number;
-    const std::string line = trim(raw);
-    const Where where{path.string(), number};
-    if (line.rfind("*", 0) == 0 && line.rfind("**", 0) != 0) {
-      const std::vector<std::string> fields = split_commas(line.substr(1));
-      const std::string keyword = upper(fields[0]);
-      if (keyword == "STEP") return true;
-      if (keyword == "INCLUDE") {
-        const std::string input = parameter(fields, "INPUT");
-        if (input.empty())
-          throw ImportError(where.text() + ": *INCLUDE without INPUT=file");
-        std::filesystem::path included(input);
-        if (included.is_relative()) included = path.parent_path() / included;
-        if (!std::filesystem::exists(included))
-          throw ImportError(where.text() + ": included file '" + included.string() +
-                            "' does not exist");
-        if (collect_lines(included, out, depth + 1)) return true;
+[[noreturn]] void fail(const Where& where, const std::string& what) {
+  throw ImportError(where.text() + ": " + what);
+}
+
+bool starts_with(const std::string& s, std::string_view prefix) {
+  return s.rfind(prefix, 0) == 0;
+}
+
+/// ccx's keyword tests (calinput.f), on the upper-case line.
+bool is_node_keyword(const std::string& u) {
+  return starts_with(u, "*NODE") && !starts_with(u, "*NODEPRINT") &&
+         !starts_with(u, "*NODEOUTPUT") && !starts_with(u, "*NODEFILE");
+}
+bool is_element_keyword(const std::string& u) {
+  return starts_with(u, "*ELEMENT") && !starts_with(u, "*ELEMENTOUTPUT");
+}
+
+/// The file name of an *INCLUDE line (ccx's includefilename.f): after the
+/// line's first '=', to its closing quote if it opens with one, else to
+/// the end of the line.
+std::string include_name(const CalculixLine& line, const Where& where) {
+  const std::string& s = line.upper; // the file name keeps its case there
+  const size_t eq = s.find('=');
+  if (eq == std::string::npos) fail(where, "*INCLUDE without INPUT=file");
+  std::string name;
+  if (eq + 1 < s.size() && s[eq + 1] == '"') {
+    const size_t close = s.find('"', eq + 2);
+    if (close == std::string::npos) fail(where, "*INCLUDE: the file name's closing quote is missing");
+    name = s.substr(eq + 2, close - eq - 2);
+  } else {
+    name = s.substr(eq + 1);
+  }
+  if (name.empty()) fail(where, "*INCLUDE: the file name is missing");
+  if (name.size() > 132)
+    fail(where, "*INCLUDE: a file name of more than 132 characters (ccx's limit)");
+  return name;
+}
+
+/// State of reading the model part across the files it includes.
+struct Reader {
+  fs::path folder;          ///< ccx's working directory: the deck's folder
+  std::ostringstream model; ///< model part, includes inlined
+  std::vector<Line> lines;  ///< significant lines of the model part
+  bool heading = false;     ///< inside *HEADING's text lines
+
+  /// Reads `path`'s lines until *STEP (returns true) or its end.
+  bool read(const fs::path& path, int depth) {
+    const std::string text = read_whole_file(path.string());
+    size_t offset = 0;
+    std::string_view raw;
+    int number = 0;
+    while (next_line(text, offset, raw)) {
+      ++number;
+      const Where where{path.string(), number};
+      std::string_view kept = raw.substr(0, raw.find('\r'));
+      if (kept.size() > kCalculixLineLength)
+        fail(where, "a line of " + std::to_string(kept.size()) +
+                        " characters: ccx reads at most 1319 a line and would read the rest as "
+                        "another line; split it");
+      if (heading) {
+        if (!kept.empty() && kept[0] == '*' && (kept.size() < 2 || kept[1] != '*')) {
+          heading = false;
+        } else {
+          model << kept << "\n";
+          continue;
+        }
+      }
+      CalculixLine line = calculix_line(kept);
+      if (line.skipped()) {
+        model << kept << "\n";
         continue;
       }
+      if (starts_with(line.upper, "*HEADING")) heading = true;
+      if (starts_with(line.upper, "*STEP")) return true;
+      if (starts_with(line.upper, "*INCLUDE")) {
+        const std::string name = include_name(line, where);
+        fs::path included(name);
+        if (included.is_relative()) included = folder / included;
+        if (!fs::is_regular_file(included)) {
+          std::string hint;
+          const fs::path beside = path.parent_path() / name;
+          if (fs::path(name).is_relative() && path.parent_path() != folder &&
+              fs::is_regular_file(beside))
+            hint = " (ccx opens an included file relative to its working directory, taken as "
+                   "the deck's folder " + folder.string() + ", not relative to the including "
+                   "file; there is a file " + beside.string() + ": name it relative to " +
+                   folder.string() + ")";
+          fail(where, "*INCLUDE: the file '" + included.string() + "' does not exist" + hint);
+        }
+        if (depth + 1 > kIncludeDepth)
+          fail(where, "*INCLUDE nested more than 9 deep (ccx's limit; a cycle?)");
+        if (read(included, depth + 1)) return true;
+        continue;
+      }
+      model << kept << "\n";
+      lines.push_back({std::move(line), where});
     }
-    out.push_back({line, where});
+    return false;
   }
-  return false;
+};
+
+std::vector<std::string> fields_of(const Line& line, const std::string& keyword) {
+  const auto fields = calculix_fields(line.text.upper);
+  if (!fields)
+    fail(line.where, keyword + ": more than 16 fields on a line (ccx's limit); continue on the "
+                               "next line");
+  return *fields;
 }
 
-int parse_int(const std::string& field, const Where& where, const std::string& what) {
-  int value = 0;
-  const auto [p, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (ec != std::errc() || p != field.data() + field.size())
-    throw ImportError(where.text() + ": " + what + " must be an integer, got '" + field + "'");
-  return value;
+/// Value of PARAM= on a keyword line, or nullopt.
+std::optional<std::string> parameter(const std::vector<std::string>& fields,
+                                     const std::string& name) {
+  for (size_t i = 1; i < fields.size(); ++i)
+    if (starts_with(fields[i], name + "=")) return fields[i].substr(name.size() + 1);
+  return std::nullopt;
 }
 
-double parse_double(const std::string& field, const Where& where, const std::string& what) {
-  double value = 0.0;
-  const auto [p, ec] = std::from_chars(field.data(), field.data() + field.size(), value);
-  if (ec != std::errc() || p != field.data() + field.size() || !std::isfinite(value))
-    throw ImportError(where.text() + ": " + what + " must be a finite number, got '" + field +
-                      "'");
-  return value;
+std::string set_name(const std::optional<std::string>& name, const Line& line,
+                     const std::string& keyword) {
+  if (!name || name->empty()) fail(line.where, keyword + " without NSET=name");
+  if (name->size() > 80)
+    fail(line.where, keyword + ": a set name of more than 80 characters (ccx's limit)");
+  return *name;
+}
+
+/// An integer field as ccx reads it (I10), refused where ccx would read
+/// it otherwise than written (more than 10 characters) or not at all.
+std::int64_t integer_field(const std::string& field, const Line& line, const std::string& what) {
+  const std::optional<std::int64_t> value = fortran_integer(field);
+  if (field.size() > 10 && fortran_integer(field, std::string::npos) != value)
+    fail(line.where, what + " '" + field + "' has more than 10 characters: ccx reads only its "
+                            "first 10 ('" + field.substr(0, 10) + "')");
+  if (!value)
+    fail(line.where, what + " must be an integer in [-2147483648, 2147483647], got '" + field + "'");
+  return *value;
+}
+
+double real_field(const std::string& field, const Line& line, const std::string& what) {
+  const std::optional<double> value = fortran_real(field);
+  if (field.size() > 20 && fortran_real(field, std::string::npos) != value)
+    fail(line.where, what + " '" + field + "' has more than 20 characters: ccx reads only its "
+                            "first 20 ('" + field.substr(0, 20) + "'); shorten it");
+  if (!value) fail(line.where, what + " must be a number, got '" + field + "'");
+  if (!std::isfinite(*value))
+    fail(line.where, what + " must be finite, got '" + field + "'");
+  return *value;
+}
+
+/// A *NODE block: its data lines into `nodes` (id -> coordinates, the last
+/// definition kept) and its set.
+void read_node_block(const std::vector<Line>& lines, size_t& k,
+                     std::map<int, Eigen::Vector3d>& nodes,
+                     std::map<std::string, std::vector<int>>& nsets) {
+  const std::vector<std::string> key = fields_of(lines[k], "*NODE");
+  const std::optional<std::string> nset = parameter(key, "NSET");
+  std::vector<int>* set = nullptr;
+  if (nset) set = &nsets[set_name(nset, lines[k], "*NODE, NSET=")];
+  for (++k; k < lines.size() && !lines[k].text.keyword(); ++k) {
+    const std::vector<std::string> f = fields_of(lines[k], "*NODE");
+    const std::int64_t id = integer_field(f[0], lines[k], "*NODE: the node id");
+    if (id < 1)
+      fail(lines[k].where, "*NODE: node id " + std::to_string(id) +
+                               " (ids are integers in [1, 2147483647]; ccx crashes on it)");
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    for (size_t c = 1; c < std::min<size_t>(f.size(), 4); ++c)
+      x(static_cast<int>(c - 1)) = real_field(f[c], lines[k], "*NODE: a coordinate");
+    nodes[static_cast<int>(id)] = x;
+    if (set) set->push_back(static_cast<int>(id));
+  }
+}
+
+/// Names of the node sets an *NSET block defines, with where, to tell a
+/// set named before its definition (ccx silently reads it as empty) from
+/// one never defined.
+std::map<std::string, Where> later_sets(const std::vector<Line>& lines) {
+  std::map<std::string, Where> defined;
+  for (const Line& line : lines)
+    if (starts_with(line.text.upper, "*NSET")) {
+      const auto fields = calculix_fields(line.text.upper);
+      if (!fields) continue;
+      const std::optional<std::string> name = parameter(*fields, "NSET");
+      if (name && !defined.count(*name)) defined[*name] = line.where;
+    }
+  return defined;
+}
+
+void read_nset_block(const std::vector<Line>& lines, size_t& k, int largest,
+                     const std::map<std::string, Where>& definitions,
+                     std::map<std::string, std::vector<int>>& nsets) {
+  const Line& head = lines[k];
+  const std::vector<std::string> key = fields_of(head, "*NSET");
+  const std::string name = set_name(parameter(key, "NSET"), head, "*NSET");
+  const bool generate = std::any_of(key.begin() + 1, key.end(), [](const std::string& f) {
+    return starts_with(f, "GENERATE");
+  });
+  // The set's earlier content, before this block adds to it.
+  std::vector<int> set = nsets.count(name) ? nsets[name] : std::vector<int>{};
+  for (++k; k < lines.size() && !lines[k].text.keyword(); ++k) {
+    const Line& line = lines[k];
+    const std::vector<std::string> f = fields_of(line, "*NSET");
+    if (generate) {
+      if (f.size() < 2 || f[1].empty())
+        fail(line.where, "*NSET, GENERATE: a line is 'first, last[, step]' (ccx crashes on "
+                         "fewer fields)");
+      const std::int64_t first = integer_field(f[0], line, "*NSET, GENERATE: first");
+      std::int64_t last = integer_field(f[1], line, "*NSET, GENERATE: last");
+      const std::int64_t step =
+          f.size() >= 3 && !f[2].empty() ? integer_field(f[2], line, "*NSET, GENERATE: step") : 1;
+      if (first < 1 || first > largest)
+        fail(line.where, "*NSET, GENERATE: first = " + std::to_string(first) +
+                             " must lie in [1, " + std::to_string(largest) +
+                             "], the largest node id (ccx refuses it)");
+      if (last < first)
+        fail(line.where, "*NSET, GENERATE: last = " + std::to_string(last) +
+                             " is below first = " + std::to_string(first) +
+                             " (ccx's reading of it is not defined)");
+      if (step < 1)
+        fail(line.where, "*NSET, GENERATE: step = " + std::to_string(step) +
+                             " must be at least 1 (ccx refuses or crashes on it)");
+      last = std::min<std::int64_t>(last, largest); // ccx: "end value > nk, replaced by nk"
+      const std::int64_t count = (last - first) / step + 1;
+      if (count > kGenerateIds)
+        fail(line.where, "*NSET, GENERATE: " + std::to_string(count) +
+                             " ids in one line, more than the 100000000 rsi holds");
+      for (std::int64_t id = first; id <= last; id += step)
+        set.push_back(static_cast<int>(id));
+      continue;
+    }
+    for (size_t i = 0; i < f.size(); ++i) {
+      if (f[i].empty())
+        fail(line.where, "*NSET: an empty field between two commas (ccx reads it as node 0 and "
+                         "crashes)");
+      if (fortran_integer(f[i])) {
+        const std::int64_t id = integer_field(f[i], line, "*NSET: a node id");
+        if (id < 1)
+          fail(line.where, "*NSET: node id " + std::to_string(id) +
+                               " (ids are integers in [1, 2147483647])");
+        if (id <= largest) set.push_back(static_cast<int>(id)); // ccx drops ids above nk
+        continue;
+      }
+      if (f[i].size() > 80)
+        fail(line.where, "*NSET: a set name of more than 80 characters (ccx's limit)");
+      if (f[i] == name) continue; // ccx: a set naming itself adds nothing
+      const auto found = nsets.find(f[i]);
+      if (found != nsets.end()) {
+        set.insert(set.end(), found->second.begin(), found->second.end());
+        continue;
+      }
+      const auto later = definitions.find(f[i]);
+      if (later != definitions.end())
+        fail(line.where, "*NSET " + name + " names the node set " + f[i] +
+                             " before it is defined (" + later->second.text() +
+                             "): ccx reads that name as an empty set; define " + f[i] + " first");
+      fail(line.where, "*NSET " + name + ": node set " + f[i] +
+                           " is not defined (a node set of *NSET or *NODE, NSET=)");
+    }
+  }
+  nsets[name] = std::move(set);
+}
+
+void note(std::vector<DeckKeyword>& list, const std::string& name, const Where& where) {
+  if (std::none_of(list.begin(), list.end(),
+                   [&](const DeckKeyword& k) { return k.name == name; }))
+    list.push_back({name, where.text()});
 }
 
 } // namespace
@@ -121,74 +306,44 @@ double parse_double(const std::string& field, const Where& where, const std::str
 CalculixDeck read_calculix_deck(const std::string& path) {
   CalculixDeck deck;
   deck.path = path;
-  std::vector<Line> lines;
-  collect_lines(std::filesystem::path(path), lines, 0);
-  std::ostringstream model;
-  enum class Block { other, node, nset, nset_generate } block = Block::other;
-  std::vector<int>* nset = nullptr;
+  Reader reader;
+  reader.folder = fs::path(path).parent_path();
+  if (reader.folder.empty()) reader.folder = ".";
+  reader.read(fs::path(path), 0);
+  deck.model_text = stream_text(reader.model);
+  const std::vector<Line>& lines = reader.lines;
+
+  // Keywords and element types, for the features rsi takes.
   for (const Line& line : lines) {
-    model << line.text << "\n";
-    if (line.text.empty() || line.text.rfind("**", 0) == 0) continue;
-    if (line.text[0] == '*') {
-      const std::vector<std::string> fields = split_commas(line.text.substr(1));
-      const std::string keyword = upper(fields[0]);
-      block = Block::other;
-      if (keyword == "NODE") {
-        block = Block::node;
-        const std::string name = upper(parameter(fields, "NSET"));
-        nset = name.empty() ? nullptr : &deck.nsets[name];
-      } else if (keyword == "NSET") {
-        const std::string name = upper(parameter(fields, "NSET"));
-        if (name.empty()) throw ImportError(line.where.text() + ": *NSET without NSET=name");
-        nset = &deck.nsets[name];
-        const bool generate = std::any_of(fields.begin() + 1, fields.end(), [](const std::string& f) {
-          return upper(f) == "GENERATE";
-        });
-        block = generate ? Block::nset_generate : Block::nset;
-      }
-      continue;
-    }
-    const std::vector<std::string> fields = split_commas(line.text);
-    if (block == Block::node) {
-      if (fields.size() < 2 || fields.size() > 4)
-        throw ImportError(line.where.text() + ": a *NODE line is 'id, x[, y[, z]]'");
-      ComponentNode node;
-      node.id = parse_int(fields[0], line.where, "the node id");
-      for (size_t k = 1; k < fields.size(); ++k)
-        node.x(static_cast<int>(k - 1)) =
-            fields[k].empty() ? 0.0 : parse_double(fields[k], line.where, "a coordinate");
-      deck.nodes.push_back(node);
-      if (nset) nset->push_back(node.id);
-    } else if (block == Block::nset) {
-      for (const std::string& f : fields)
-        if (!f.empty()) {
-          if (!std::isdigit(static_cast<unsigned char>(f[0])))
-            throw ImportError(line.where.text() +
-                              ": node sets given by name inside *NSET are not supported, got '" +
-                              f + "'");
-          nset->push_back(parse_int(f, line.where, "a node id"));
-        }
-    } else if (block == Block::nset_generate) {
-      if (fields.size() < 2 || fields.size() > 3)
-        throw ImportError(line.where.text() + ": a GENERATE line is 'first, last[, step]'");
-      const int first = parse_int(fields[0], line.where, "first");
-      const int last = parse_int(fields[1], line.where, "last");
-      const int step = fields.size() == 3 && !fields[2].empty()
-                           ? parse_int(fields[2], line.where, "step")
-                           : 1;
-      if (step < 1 || last < first)
-        throw ImportError(line.where.text() + ": GENERATE needs first <= last and step >= 1");
-      for (int id = first; id <= last; id += step)
-        nset->push_back(id);
+    if (!line.text.keyword()) continue;
+    const auto fields = calculix_fields(line.text.upper);
+    const std::string name = fields ? fields->front().substr(1) : line.text.upper.substr(1);
+    note(deck.keywords, name, line.where);
+    if (is_element_keyword(line.text.upper) && fields)
+      if (const std::optional<std::string> type = parameter(*fields, "TYPE"))
+        note(deck.element_types, *type, line.where);
+  }
+
+  // ccx reads every *NODE block before any *NSET (keystart.f).
+  std::map<int, Eigen::Vector3d> nodes;
+  for (size_t k = 0; k < lines.size();)
+    if (is_node_keyword(lines[k].text.upper)) read_node_block(lines, k, nodes, deck.nsets);
+    else ++k;
+  deck.largest_node_id = nodes.empty() ? 0 : nodes.rbegin()->first;
+  const std::map<std::string, Where> definitions = later_sets(lines);
+  for (size_t k = 0; k < lines.size();) {
+    if (starts_with(lines[k].text.upper, "*NSET")) {
+      // Sets defined from here on are not yet defined for this block.
+      std::map<std::string, Where> later;
+      for (const auto& [name, where] : definitions)
+        if (!deck.nsets.count(name)) later.insert({name, where});
+      read_nset_block(lines, k, deck.largest_node_id, later, deck.nsets);
+    } else {
+      ++k;
     }
   }
-  deck.model_text = stream_text(model);
-  std::sort(deck.nodes.begin(), deck.nodes.end(),
-            [](const ComponentNode& a, const ComponentNode& b) { return a.id < b.id; });
-  for (size_t k = 1; k < deck.nodes.size(); ++k)
-    if (deck.nodes[k].id == deck.nodes[k - 1].id)
-      throw ImportError(path + ": node " + std::to_string(deck.nodes[k].id) +
-                        " defined twice in *NODE blocks");
+  for (const auto& [id, x] : nodes)
+    deck.nodes.push_back({id, x});
   return deck;
 }
 

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <unordered_set>
+#include <limits>
+#include <set>
 
 #include "coordinate_entries.hpp"
 
@@ -43,6 +44,13 @@ DofMap read_calculix_dofs(const std::string& path) {
 
 namespace {
 
+int node_id(int id) {
+  return id;
+}
+int node_id(const ComponentNode& node) {
+  return node.id;
+}
+
 Eigen::SparseMatrix<double> read_matrix(const std::string& path, int n, bool mass) {
   const std::string text = read_whole_file(path);
   const CoordinateEntries entries = parse_coordinate_entries(text, 0, 1, n, path);
@@ -69,18 +77,34 @@ Component read_calculix_component(const std::string& prefix, const CalculixDeck&
   const int n = c.n_dofs();
   c.stiffness = read_matrix(prefix + ".sti", n, false);
   c.mass = read_matrix(prefix + ".mas", n, true);
-  std::unordered_set<int> used;
+  // A row's node is a node of the deck, or one ccx created above the
+  // deck's largest id (nk): the incompatible modes of C3D8I elements, the
+  // rotations of beam and shell knots. The nodes ccx creates when it
+  // expands beams, shells and plane elements are written with the deck
+  // node they expand (ccx's gennactdofinv.f), so every row of those
+  // carries its user node.
+  std::set<int> used;
   for (const DofInfo& d : c.dofs)
     used.insert(d.node);
-  std::unordered_set<int> defined;
-  for (const ComponentNode& node : deck.nodes) {
-    defined.insert(node.id);
+  for (const ComponentNode& node : deck.nodes)
     if (used.count(node.id)) c.nodes.push_back(node);
+  for (int id : used) {
+    if (id > deck.largest_node_id) {
+      ComponentNode created;
+      created.id = id;
+      created.x.setConstant(std::numeric_limits<double>::quiet_NaN());
+      created.generated = true;
+      c.nodes.push_back(created);
+    } else if (!std::binary_search(deck.nodes.begin(), deck.nodes.end(), id,
+                                   [](const auto& a, const auto& b) {
+                                     return node_id(a) < node_id(b);
+                                   })) {
+      throw ImportError(prefix + ".dof: node " + std::to_string(id) +
+                        " has dofs but no *NODE line in " + deck.path +
+                        " (below its largest node id " + std::to_string(deck.largest_node_id) +
+                        ", so not a node ccx created): the matrices do not belong to this deck");
+    }
   }
-  for (const DofInfo& d : c.dofs)
-    if (!defined.count(d.node))
-      throw ImportError(prefix + ".dof: node " + std::to_string(d.node) +
-                        " has dofs but no *NODE line in " + deck.path);
   c.boundary = boundary_of_nodes(boundary_nodes, c.dofs, deck.path + " (boundary node set)");
   check_component(c, prefix + ".{sti,mas}");
   return c;

@@ -6,6 +6,16 @@
 // the deck's constraints already removed. Node coordinates and node sets
 // come from the deck (calculix_deck.hpp).
 //
+// The nodes ccx creates: ccx expands beams (B31, B32), shells (S3 ... S8R)
+// and plane and axisymmetric elements (CPS*, CPE*, CAX*) into solid
+// elements with new nodes, and writes each row of an expanded node with
+// the deck node it expands (src/gennactdofinv.f): such a deck node has
+// several rows of one direction, all its own, all on the boundary when it
+// is. The nodes ccx adds above the deck's largest node id (the three
+// incompatible-mode nodes of each C3D8I element, B31's expansion included;
+// the rotation and expansion nodes of a beam or shell knot) are interior
+// dofs: generated nodes without a position (ComponentNode::generated).
+//
 // Throws ImportError naming file and line for a truncated or non-numeric
 // line, an index beyond the .dof count, NaN/Inf, an entry given twice, and
 // through check_component for K or M not symmetric within 1e-12 or a

@@ -32,6 +32,11 @@ public:
 struct ComponentNode {
   int id = 0;
   Eigen::Vector3d x = Eigen::Vector3d::Zero(); ///< coordinates, in the component's length unit
+  /// A node the model's generator created, not the user (ccx: the
+  /// incompatible modes of a C3D8I element, the rotations of a beam or
+  /// shell knot, calculix_matrices.hpp): it has no position (x is NaN) and
+  /// is never a boundary, contact or response node.
+  bool generated = false;
 };
 
 /// n_sectors identical blocks of dofs_per_sector dofs, block k at angle

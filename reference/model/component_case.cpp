@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "calculix_deck.hpp"
+#include "calculix_features.hpp"
 #include "calculix_matrices.hpp"
 #include "calculix_run.hpp"
 #include "case_json.hpp"
@@ -343,6 +344,20 @@ ComponentCase parse_component_case(const json& document, const std::string& path
 }
 
 Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
+  // --source replaces the case's deck or folder, and nothing else: a case
+  // whose model is more than that one path is refused, never half replaced.
+  if (!options.source_override.empty() && !c.calculix_matrices.empty())
+    throw CaseError(c.case_path + ": key 'component.source.calculix_matrices': the case reads "
+                    "the matrices " + c.calculix_matrices + ".{sti,mas,dof} of a ccx run of " +
+                    c.source_path + ", and --source names the deck " + options.source_override +
+                    ": rsi would mix that deck's nodes and sets with the other deck's matrices; "
+                    "drop --source, or run it on a case without calculix_matrices");
+  if (!options.source_override.empty() && c.source == ComponentSource::gmsh_blade)
+    throw CaseError(c.case_path + ": key 'component.source.gmsh_blade': the case builds its "
+                    "blade deck from these parameters, and --source names " +
+                    options.source_override + ": --source replaces a calculix_deck or "
+                    "matrix_market source only; write a case whose calculix_deck names that "
+                    "deck (with its boundary) instead");
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
   Component component;
   if (c.source == ComponentSource::matrix_market) {
@@ -358,6 +373,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
       throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
                         "' is not a file (the deck; --source overrides it)");
     const CalculixDeck deck = read_calculix_deck(source);
+    check_calculix_features(deck);
     std::vector<int> boundary = c.boundary_nodes;
     if (!c.boundary_node_set.empty()) {
       const auto set = deck.nsets.find(c.boundary_node_set);
@@ -371,11 +387,17 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                               [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
         throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
                           std::to_string(id) + " is not a node of the deck " + source);
-    const std::string job = c.calculix_matrices.empty()
-                                ? calculix_matrices(deck, options.ccx_cache)
-                                : c.calculix_matrices;
-    component = read_calculix_component(job, deck,
-                                        boundary, c.name);
+    const bool ran_ccx = c.calculix_matrices.empty();
+    const std::string job = ran_ccx ? calculix_matrices(deck, options.ccx_cache) : c.calculix_matrices;
+    try {
+      component = read_calculix_component(job, deck, boundary, c.name);
+    } catch (const ImportError& e) {
+      // A defect of the files rsi had ccx write (a zero mass on a dof ccx
+      // made, say) is the deck's: say so before the cache file's name.
+      if (!ran_ccx || std::string(e.what()).rfind(job, 0) != 0) throw;
+      throw ImportError(source + ": the matrices ccx wrote for this deck (in --ccx-cache " +
+                        options.ccx_cache + ") are not a component: " + e.what());
+    }
   }
   component.units = c.units;
   component.rotation_axis = c.rotation_axis;

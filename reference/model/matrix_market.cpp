@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "coordinate_entries.hpp"
@@ -101,8 +102,14 @@ std::vector<ComponentNode> read_nodes_csv(const std::string& path) {
   for (const auto& [line, f] : csv_rows(path, "node,x,y,z", 4)) {
     ComponentNode node;
     node.id = parse_field<int>(f[0], path, line, "node");
-    for (int k = 0; k < 3; ++k)
-      node.x(k) = parse_field<double>(f[k + 1], path, line, "coordinate");
+    if (f[1].empty() && f[2].empty() && f[3].empty()) {
+      // A generated node (ccx's incompatible modes, knots): no position.
+      node.x.setConstant(std::numeric_limits<double>::quiet_NaN());
+      node.generated = true;
+    } else {
+      for (int k = 0; k < 3; ++k)
+        node.x(k) = parse_field<double>(f[k + 1], path, line, "coordinate");
+    }
     if (!nodes.empty() && node.id <= nodes.back().id)
       fail(path, line, "node ids must be ascending and unique");
     nodes.push_back(node);
@@ -184,6 +191,14 @@ Component read_matrix_market_component(const std::string& folder, const std::str
     c.boundary = boundary_of_nodes(*boundary_nodes, c.dofs, folder + " (boundary node set)");
   } else {
     c.boundary = flagged_boundary(c.dofs);
+  }
+  for (int b : c.boundary) {
+    const auto at = std::lower_bound(c.nodes.begin(), c.nodes.end(), c.dofs[b].node,
+                                     [](const ComponentNode& a, int id) { return a.id < id; });
+    if (at->generated)
+      throw ImportError(folder + ": boundary node " + std::to_string(at->id) +
+                        " is a generated node (empty coordinates in nodes.csv): it cannot be on "
+                        "the boundary");
   }
   check_component(c, folder);
   return c;
