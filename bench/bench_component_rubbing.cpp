@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -284,12 +285,12 @@ int main(int argc, char** argv) {
     ComponentIntegrator integrator(basis, casing, o);
     res.dt = o.dt;
     ComponentRunOptions ro;
-    ro.steps = n_samples * res.every;
+    ro.steps = static_cast<std::int64_t>(n_samples) * res.every;
     ro.output_every = res.every;
     ro.energy_every = 100 * res.every; // E costs 2 r^2: checked every 100 samples
     ComponentHistory h;
     res.summary = run_component(integrator, basis.transformation.row(response_dof), ro, h);
-    res.steps = res.summary.steps;
+    res.steps = static_cast<int>(res.summary.steps);
     for (int k = 0; k < h.n_rows(); ++k) {
       res.response.push_back(h.response[k]);
       double s = 0.0;

@@ -4,6 +4,7 @@
 // dof u_NODE_DIR, then the columns of the paper's case with two tangents per
 // contact (run_outputs.hpp). Written by rsi simulate and rsi campaign alike.
 
+#include <cstdint>
 #include <string>
 
 #include "history.hpp"
@@ -23,7 +24,7 @@ private:
   StreamedTextFile m_file;
   std::string m_header;
   std::string m_line;
-  int m_rows = 0;
+  std::int64_t m_rows = 0;
 };
 
 } // namespace rsi

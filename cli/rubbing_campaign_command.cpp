@@ -119,6 +119,7 @@ void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revo
   o.method = entry.method;
   o.modes = entry.modes;
   o.revolutions = revolutions;
+  if (entry.method == "full") o.revolutions_key = "rubbing.campaign.full_revolutions";
   o.checkpoint = throw_if_interrupted;
   o.progress = terminal_progress(run_name(entry));
   try {

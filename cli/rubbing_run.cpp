@@ -1,8 +1,14 @@
 #include "rubbing_run.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include <Eigen/Eigenvalues>
@@ -18,9 +24,77 @@
 namespace rsi {
 namespace {
 
-/// k of the header: samples at T/N, integration at T/(k N) <= safety x critical.
-int steps_per_sample(double sample_dt, double critical_dt, double safety) {
-  return std::max(1, static_cast<int>(std::ceil(sample_dt / (safety * critical_dt))));
+/// A run's counts, in 64-bit: samples, steps a sample (k of the header),
+/// steps.
+struct RunCounts {
+  std::int64_t samples = 0;
+  std::int64_t steps_per_sample = 1;
+  std::int64_t steps = 0;
+};
+
+std::string count_text(double x) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.0f", x);
+  return buffer;
+}
+
+/// k of the header (samples at T/N, integration at T/(k N) <= safety x
+/// critical) and the run's step count, checked against max_rubbing_steps
+/// in floating point before any integer holds them: CaseError naming the
+/// keys. `method` and `limit` say which model's stability limit set k.
+RunCounts checked_counts(const RubbingModel& model, const RubbingRunOptions& options,
+                         std::int64_t samples, double sample_dt, double critical_dt,
+                         const std::string& method) {
+  const RubbingSetup& setup = model.setup;
+  const double k = std::max(1.0, std::ceil(sample_dt / (setup.step_safety * critical_dt)));
+  const double steps = static_cast<double>(samples) * k;
+  if (!(steps <= static_cast<double>(max_rubbing_steps))) {
+    std::ostringstream m;
+    m.precision(6);
+    m << model.component_case.case_path << ": keys '" << options.revolutions_key
+      << "' and 'rubbing.steps_per_revolution': " << samples << " samples x " << count_text(k)
+      << " steps a sample (the " << method << " run steps at T/(k N) <= rubbing.step_safety "
+      << setup.step_safety << " x its stability limit " << critical_dt << " s, T/N = " << sample_dt
+      << " s) = " << count_text(steps) << " steps, more than the " << max_rubbing_steps
+      << " a run can count: fewer revolutions or samples a revolution, or a faster "
+         "rubbing.rotation_speed";
+    throw CaseError(m.str());
+  }
+  RunCounts c;
+  c.samples = samples;
+  c.steps_per_sample = static_cast<std::int64_t>(k);
+  c.steps = samples * c.steps_per_sample;
+  return c;
+}
+
+/// The samples of a run and its history's size, checked before the run:
+/// CaseError naming the keys.
+std::int64_t checked_samples(const RubbingModel& model, const RubbingRunOptions& options,
+                             double revolutions) {
+  const RubbingSetup& setup = model.setup;
+  // revolutions <= 1e5, steps_per_revolution <= 1e8 (the case's ranges):
+  // at most 1e13 samples, exact in a double and an int64.
+  const double samples = std::max(1.0, std::round(revolutions * setup.steps_per_revolution));
+  if (!(samples <= static_cast<double>(max_rubbing_steps)))
+    throw CaseError(model.component_case.case_path + ": keys '" + options.revolutions_key +
+                    "' and 'rubbing.steps_per_revolution': " + count_text(samples) +
+                    " samples, more than the " + std::to_string(max_rubbing_steps) +
+                    " steps a run can count");
+  // t, the response, per contact gap, lambda_n, lambda_t1, lambda_t2, and
+  // E, W_ext, W_contact, W_damp: about 24 bytes each (%.17g and a comma).
+  const double columns = 6.0 + 4.0 * static_cast<double>(model.contact_nodes.size());
+  const double bytes = (std::floor(samples / setup.output_every) + 1.0) * columns * 24.0;
+  if (bytes > max_rubbing_history_bytes) {
+    std::ostringstream m;
+    m.precision(4);
+    m << model.component_case.case_path << ": key 'rubbing.output_every': " << count_text(samples)
+      << " samples (" << options.revolutions_key
+      << " x rubbing.steps_per_revolution) written every " << setup.output_every
+      << " would make history.csv about " << bytes / 1e9 << " GB (limit "
+      << max_rubbing_history_bytes / 1e9 << " GB): raise rubbing.output_every";
+    throw CaseError(m.str());
+  }
+  return static_cast<std::int64_t>(samples);
 }
 
 /// 2/omega of a massless boundary's interior with the whole boundary held
@@ -56,8 +130,8 @@ RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, i
   RunSummary s;
   s.method = method;
   s.n_dofs = dofs;
-  s.steps_requested = c.steps_requested;
-  s.steps = c.steps;
+  s.steps_requested = static_cast<int>(c.steps_requested); // at most max_rubbing_steps
+  s.steps = static_cast<int>(c.steps);
   s.completed = c.completed;
   s.status = c.status;
   s.dt = c.dt;
@@ -84,7 +158,7 @@ RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, i
 }
 
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
-                               int n_samples, const ComponentRowSink& sink) {
+                               std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup;
   const auto t0 = std::chrono::steady_clock::now();
   const ReducedBasis basis = reduce(model.component.stiffness, model.component.mass,
@@ -109,55 +183,58 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   const double critical_dt =
       basis.massless_boundary ? std::min(free_critical_dt, held_boundary_critical_dt(basis))
                               : free_critical_dt;
+  const RunCounts counts =
+      checked_counts(model, options, n_samples, sample_dt, critical_dt, options.method);
   RubbingRun run;
   run.reduced_size = basis.n_reduced();
   run.step_limit = critical_dt;
   if ((options.method == "ccm" || options.method == "macneal") && basis.mode_omega.size() > 0)
     run.first_mode_hz = basis.mode_omega.minCoeff() / (2.0 * M_PI);
-  run.steps_per_sample = steps_per_sample(sample_dt, critical_dt, setup.step_safety);
+  run.steps_per_sample = static_cast<int>(counts.steps_per_sample);
   o.dt = sample_dt / run.steps_per_sample;
   o.force_step = options.force;
   ComponentIntegrator integrator(basis, casing, o);
   ComponentRunOptions ro;
-  ro.steps = n_samples * run.steps_per_sample;
-  ro.output_every = run.steps_per_sample * setup.output_every;
+  ro.steps = counts.steps;
+  ro.output_every = counts.steps_per_sample * setup.output_every;
   ro.energy_every = ro.output_every;
   ro.checkpoint = options.checkpoint;
-  ComponentHistory h;
-  const ComponentRunSummary c =
-      run_component(integrator, basis.transformation.row(model.response_dof), ro, h);
-  // The run's wall time, as for the bladed disk's reduced runs: from the
-  // basis (basis_seconds) to the last step, the rows' output after it left out.
-  const double wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
+  // Each row goes to the sink as the step loop makes it, as in the full run:
+  // nothing is kept (a run of 1000 revolutions once held hundreds of MB).
   const int nc = casing.n_contacts();
   Eigen::VectorXd normal(nc), tangential(2 * nc);
   double max_lambda = 0.0;
-  for (int i = 0; i < h.n_rows(); ++i) {
+  const ComponentSampleSink rows = [&](const ComponentSample& sample) {
     for (int k = 0; k < nc; ++k) {
-      normal(k) = h.lambda[i](3 * k);
-      tangential(2 * k) = h.lambda[i](3 * k + 1);
-      tangential(2 * k + 1) = h.lambda[i](3 * k + 2);
+      normal(k) = sample.lambda(3 * k);
+      tangential(2 * k) = sample.lambda(3 * k + 1);
+      tangential(2 * k + 1) = sample.lambda(3 * k + 2);
     }
     max_lambda = std::max(max_lambda, normal.maxCoeff());
-    const HistoryRow row{h.time[i],   h.gap[i],          normal,
-                         h.energy[i], 0.0,               h.contact_work[i],
-                         h.damping_work[i], &tangential};
-    sink(row, h.response[i]);
-  }
+    const HistoryRow row{sample.time,         sample.gap,          normal,     sample.energy, 0.0,
+                         sample.contact_work, sample.damping_work, &tangential};
+    sink(row, sample.response);
+  };
+  const ComponentRunSummary c =
+      run_component(integrator, basis.transformation.row(model.response_dof), ro, rows);
+  // The run's wall time, as for the bladed disk's reduced runs: from the
+  // basis (basis_seconds) to the last step, the rows' output (streamed during
+  // the steps, as the full run's) included.
+  const double wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   run.summary = summary_of(c, options.method, basis.n_reduced(), max_lambda, basis_seconds);
   run.summary.wall_seconds = wall_seconds;
   return run;
 }
 
 RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
-                            int n_samples, const ComponentRowSink& sink) {
+                            std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup;
   const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
                                         : ImposedGap::constant(setup.gap);
   const RigidSurfaceContact law(rigid_surface_nodes(model.component, model.contact_nodes), gap,
                                 setup.rotation_speed, setup.friction_coefficient,
-                                setup.sliding_speed());
+                                setup.sliding_speed(), model.component.rotation_axis);
   double omega_max = 0.0;
   try {
     omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
@@ -170,11 +247,13 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
   const double sample_dt = model.period / setup.steps_per_revolution;
   RubbingRun run;
   run.step_limit = 2.0 / omega_max;
-  run.steps_per_sample = steps_per_sample(sample_dt, run.step_limit, setup.step_safety);
+  const RunCounts counts =
+      checked_counts(model, options, n_samples, sample_dt, run.step_limit, "full");
+  run.steps_per_sample = static_cast<int>(counts.steps_per_sample);
   ComponentReferenceOptions o;
   o.dt = sample_dt / run.steps_per_sample;
-  o.steps = n_samples * run.steps_per_sample;
-  o.output_every = run.steps_per_sample * setup.output_every;
+  o.steps = counts.steps;
+  o.output_every = counts.steps_per_sample * setup.output_every;
   o.energy_every = o.output_every;
   o.damping = model.component_case.damping.rayleigh;
   o.omega_max = omega_max;
@@ -184,6 +263,42 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
   run.summary = run_component_reference(model.component.stiffness, model.component.mass, law,
                                         model.response_dof, o, sink);
   return run;
+}
+
+/// Every contact node once, a node of the model with its ux, uy, uz among
+/// the boundary dofs (every run's casing law acts there, and every
+/// reduction keeps them): CaseError naming `key` otherwise.
+void check_contact_nodes(const RubbingModel& model, const std::string& key) {
+  const Component& comp = model.component;
+  const std::string where = model.component_case.case_path + ": key '" + key + "': ";
+  std::set<int> seen;
+  std::map<int, std::array<bool, 3>> on_boundary; // node -> ux, uy, uz on the boundary
+  for (int d : comp.boundary) {
+    const std::string& kind = comp.dofs[d].kind;
+    const int axis = kind == "ux" ? 0 : kind == "uy" ? 1 : kind == "uz" ? 2 : -1;
+    if (axis >= 0) on_boundary[comp.dofs[d].node][axis] = true;
+  }
+  for (int id : model.contact_nodes) {
+    if (!seen.insert(id).second)
+      throw CaseError(where + "contact node " + std::to_string(id) +
+                      " is listed twice (each contact node once)");
+    const auto at =
+        std::lower_bound(comp.nodes.begin(), comp.nodes.end(), id,
+                         [](const ComponentNode& node, int value) { return node.id < value; });
+    const bool has_node = at != comp.nodes.end() && at->id == id;
+    bool has_dofs = false;
+    for (const DofInfo& d : comp.dofs)
+      has_dofs = has_dofs || d.node == id;
+    if (!has_node || !has_dofs)
+      throw CaseError(where + "contact node " + std::to_string(id) + " is not a node of " +
+                      comp.name + " with degrees of freedom (its " +
+                      std::to_string(comp.nodes.size()) + " nodes; a clamped node has none)");
+    const auto found = on_boundary.find(id);
+    if (found == on_boundary.end() || !found->second[0] || !found->second[1] || !found->second[2])
+      throw CaseError(where + "contact node " + std::to_string(id) +
+                      ": its ux, uy and uz must be boundary dofs (component.boundary), so that "
+                      "every reduction keeps them");
+  }
 }
 
 } // namespace
@@ -202,6 +317,8 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
     for (int d : comp.boundary)
       if (model.contact_nodes.empty() || model.contact_nodes.back() != comp.dofs[d].node)
         model.contact_nodes.push_back(comp.dofs[d].node);
+  check_contact_nodes(model, c.rubbing->contact_nodes.empty() ? "component.boundary"
+                                                              : "rubbing.contact_nodes");
   // A contact or response node is one point with one dof per direction: a
   // node ccx created, or a beam, shell or plane node it expanded into
   // several (a row per expanded node and direction), is not.
@@ -246,15 +363,14 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
 
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                        const ComponentRowSink& sink) {
+  if (options.method != "full" && options.method != "cb" && options.method != "ccm" &&
+      options.method != "guyan" && options.method != "macneal")
+    throw std::invalid_argument("--method: must be full, cb, ccm, guyan or macneal, got '" +
+                                options.method + "'");
   const double revolutions = options.revolutions > 0.0 ? options.revolutions : model.setup.revolutions;
-  const int n_samples =
-      std::max(1, static_cast<int>(std::lround(revolutions * model.setup.steps_per_revolution)));
+  const std::int64_t n_samples = checked_samples(model, options, revolutions);
   if (options.method == "full") return run_full_rubbing(model, options, n_samples, sink);
-  if (options.method == "cb" || options.method == "ccm" || options.method == "guyan" ||
-      options.method == "macneal")
-    return run_reduced_rubbing(model, options, n_samples, sink);
-  throw std::invalid_argument("--method: must be full, cb, ccm, guyan or macneal, got '" +
-                              options.method + "'");
+  return run_reduced_rubbing(model, options, n_samples, sink);
 }
 
 } // namespace rsi

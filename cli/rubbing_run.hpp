@@ -19,6 +19,7 @@
 // balance with u_B^n (component_integrator.hpp). Both are the contact force
 // at t_n to first order in dt.
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -48,6 +49,9 @@ struct RubbingRunOptions {
   std::string method = "full"; ///< full, cb, ccm, guyan, macneal
   int modes = 0;
   double revolutions = 0.0;    ///< 0: the case's
+  /// The case key `revolutions` comes from, named when the run's step count
+  /// is refused (the campaign's full run: rubbing.campaign.full_revolutions).
+  std::string revolutions_key = "rubbing.revolutions";
   bool force = false;          ///< integrate at or above the stable step
   std::function<void()> checkpoint;
   std::function<void(double)> progress;
@@ -61,9 +65,20 @@ struct RubbingRun {
   double first_mode_hz = 0.0; ///< CCM, MacNeal: the lowest kept free-interface mode (0: none)
 };
 
+/// The most steps a run counts (RunSummary's int), and the largest
+/// history.csv a run may write [bytes] (as the paper's case, about 24
+/// bytes a number).
+constexpr std::int64_t max_rubbing_steps = 2147483647;
+constexpr double max_rubbing_history_bytes = 100e9;
+
 /// Runs and streams every row (t, the response dof, gaps, multipliers,
-/// energy, works) to `sink`. Throws ReductionError (bad mode count) and
-/// std::invalid_argument (a bad method).
+/// energy, works) to `sink`, reduced runs as full ones: no row is kept.
+/// Before the first step, in 64-bit arithmetic: the samples (revolutions x
+/// steps_per_revolution) times the steps a sample (k of the header) must be
+/// at most max_rubbing_steps, and the history at most
+/// max_rubbing_history_bytes, else CaseError naming the keys (exit 2).
+/// Throws ReductionError (bad mode count) and std::invalid_argument (a bad
+/// method).
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                        const ComponentRowSink& sink);
 

@@ -24,10 +24,30 @@ int runaway_contact(const ComponentIntegrator& integrator) {
 
 } // namespace
 
+void ComponentHistory::append(const ComponentSample& row) {
+  time.push_back(row.time);
+  response.push_back(row.response);
+  gap.push_back(row.gap);
+  lambda.push_back(row.lambda);
+  energy.push_back(row.energy);
+  contact_work.push_back(row.contact_work);
+  damping_work.push_back(row.damping_work);
+  external_work.push_back(row.external_work);
+}
+
 ComponentRunSummary run_component(ComponentIntegrator& integrator,
                                   const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
                                   const ComponentRunOptions& options, ComponentHistory& history,
                                   bool started) {
+  return run_component(
+      integrator, response_row, options,
+      [&history](const ComponentSample& row) { history.append(row); }, started);
+}
+
+ComponentRunSummary run_component(ComponentIntegrator& integrator,
+                                  const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
+                                  const ComponentRunOptions& options,
+                                  const ComponentSampleSink& sink, bool started) {
   const std::string where = "run_component: ";
   if (options.steps < 1)
     throw std::invalid_argument(where + "steps = " + std::to_string(options.steps) +
@@ -45,14 +65,15 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   s.initial_energy = integrator.initial_energy();
   s.energy_scale = std::abs(s.initial_energy);
   const auto record = [&](double energy) {
-    history.time.push_back(integrator.time());
-    history.response.push_back(integrator.response(response_row));
-    history.gap.push_back(integrator.gap());
-    history.lambda.push_back(integrator.lambda());
-    history.energy.push_back(energy);
-    history.contact_work.push_back(integrator.contact_work());
-    history.damping_work.push_back(integrator.damping_work());
-    history.external_work.push_back(integrator.external_work());
+    const ComponentSample row{integrator.time(),
+                              integrator.response(response_row),
+                              integrator.gap(),
+                              integrator.lambda(),
+                              energy,
+                              integrator.contact_work(),
+                              integrator.damping_work(),
+                              integrator.external_work()};
+    sink(row);
   };
   record(integrator.energy());
   s.status = "completed";
@@ -60,7 +81,7 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
   bool first_contact = true;
   const auto t0 = std::chrono::steady_clock::now();
   const std::clock_t c0 = std::clock();
-  for (int n = 1; n <= options.steps; ++n) {
+  for (std::int64_t n = 1; n <= options.steps; ++n) {
     if (n % 1000 == 0 && options.checkpoint) options.checkpoint();
     StepReport r;
     try {

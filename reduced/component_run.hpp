@@ -18,6 +18,7 @@
 // scale). A run that breaks a monitor stops at that step, completed =
 // false, status says which and when.
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -28,6 +29,22 @@
 
 namespace rsi {
 
+/// One sampled row as run_component produces it; the references are valid
+/// only during the call of the sink that receives it.
+struct ComponentSample {
+  double time = 0.0;
+  double response = 0.0;         ///< the response dof [length]
+  const Eigen::VectorXd& gap;    ///< nc [length]
+  const Eigen::VectorXd& lambda; ///< 3 nc: n, t1, t2 per contact [force]
+  double energy = 0.0;           ///< E at an energy check, NaN between
+  double contact_work = 0.0, damping_work = 0.0;
+  double external_work = 0.0; ///< W_ext (0 without an external force)
+};
+
+/// Receives every sampled row in order (a history file streams them; a
+/// ComponentHistory keeps them).
+using ComponentSampleSink = std::function<void(const ComponentSample&)>;
+
 struct ComponentHistory {
   std::vector<double> time;
   std::vector<double> response;        ///< the response dof [length]
@@ -37,11 +54,13 @@ struct ComponentHistory {
   std::vector<double> contact_work, damping_work;
   std::vector<double> external_work; ///< W_ext (0 without an external force)
   int n_rows() const { return static_cast<int>(time.size()); }
+  /// Keeps a copy of `row`.
+  void append(const ComponentSample& row);
 };
 
 struct ComponentRunSummary {
-  int steps_requested = 0;
-  int steps = 0;
+  std::int64_t steps_requested = 0;
+  std::int64_t steps = 0;
   bool completed = false;
   std::string status;
   double dt = 0.0, omega_max = 0.0, critical_dt = 0.0;
@@ -57,16 +76,24 @@ struct ComponentRunSummary {
 };
 
 struct ComponentRunOptions {
-  int steps = 0;                    ///< >= 1
-  int output_every = 1;             ///< >= 1
-  int energy_every = 1;             ///< >= 1; rows between energy checks carry energy NaN
+  std::int64_t steps = 0;           ///< >= 1 (64-bit: a count derived from a case)
+  std::int64_t output_every = 1;    ///< >= 1
+  std::int64_t energy_every = 1;    ///< >= 1; rows between energy checks carry energy NaN
   double balance_tolerance = 1e-8;  ///< relative, in (0, 1)
   std::function<void()> checkpoint; ///< called every 1000 steps (may throw: an interruption)
 };
 
 /// Starts `integrator` from zero initial conditions unless `started`, runs,
-/// and samples. `response_row`: a row of T (r entries). Throws
-/// std::invalid_argument for bad options.
+/// and hands every sampled row to `sink` as it is produced (nothing is
+/// kept: the memory of a run does not grow with its length).
+/// `response_row`: a row of T (r entries). Throws std::invalid_argument for
+/// bad options.
+ComponentRunSummary run_component(ComponentIntegrator& integrator,
+                                  const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
+                                  const ComponentRunOptions& options,
+                                  const ComponentSampleSink& sink, bool started = false);
+
+/// The same, keeping every row in `history`.
 ComponentRunSummary run_component(ComponentIntegrator& integrator,
                                   const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
                                   const ComponentRunOptions& options, ComponentHistory& history,

@@ -15,7 +15,8 @@ namespace rsi {
 
 RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                          const std::vector<std::array<int, 3>>& boundary_index,
-                         const CasingGap& gap, double omega, double sliding_omega)
+                         const CasingGap& gap, double omega, double sliding_omega,
+                         const Eigen::Vector3d& axis)
     : m_gap(gap)
     , m_omega(omega)
     , m_sliding_omega(sliding_omega) {
@@ -41,10 +42,27 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
   if (gap.kind == CasingGapKind::oval && !(gap.width > 0.0 && gap.width < 1.0))
     throw std::invalid_argument(where + "oval gap width = " + message_number(gap.width) +
                                 ", allowed (0, 1)");
+  if (!axis.allFinite() || !(axis.norm() > 0.0))
+    throw std::invalid_argument(where + "axis = (" + message_number(axis(0)) + ", " +
+                                message_number(axis(1)) + ", " + message_number(axis(2)) +
+                                "), allowed finite and nonzero");
+  // Q = [b_1; b_2; a] (header).
+  const Eigen::Vector3d a = axis / axis.norm();
+  Eigen::Index k_max = 0;
+  a.cwiseAbs().maxCoeff(&k_max);
+  Eigen::Vector3d b1 = Eigen::Vector3d::Zero();
+  b1((k_max + 1) % 3) = 1.0;
+  b1 -= b1.dot(a) * a;
+  b1 /= b1.norm();
+  Eigen::Matrix3d q;
+  q.row(0) = b1.transpose();
+  q.row(1) = a.cross(b1).transpose();
+  q.row(2) = a.transpose();
   std::set<int> seen;
   for (size_t c = 0; c < positions.size(); ++c) {
     const Eigen::Vector3d& x = positions[c];
-    const double r = std::hypot(x(0), x(1));
+    const Eigen::Vector3d s = q * x; // axis coordinates
+    const double r = std::hypot(s(0), s(1));
     if (!x.allFinite() || !(r > 0.0))
       throw std::invalid_argument(where + "contact node " + std::to_string(c) +
                                   " lies on the rotation axis or is not finite (r = " +
@@ -54,8 +72,11 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
         throw std::invalid_argument(where + "contact node " + std::to_string(c) +
                                     ": boundary index " + std::to_string(k) +
                                     " negative or repeated, allowed distinct indices >= 0");
-    const Eigen::Vector3d en(-x(0) / r, -x(1) / r, 0.0);
-    const Eigen::Vector3d et1 = Eigen::Vector3d::UnitZ();
+    // Q^T of the axis-coordinate vectors; + 0.0 makes a -0 entry +0, so
+    // that a casing about z keeps its frames bit for bit.
+    const Eigen::Vector3d en =
+        (q.transpose() * Eigen::Vector3d(-s(0) / r, -s(1) / r, 0.0)).array() + 0.0;
+    const Eigen::Vector3d et1 = a;
     const Eigen::Vector3d et2 = en.cross(et1);
     Eigen::Matrix3d f;
     f.row(0) = en.transpose();
@@ -64,7 +85,7 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
     m_frame.push_back(f);
     m_index.push_back(boundary_index[c]);
     m_radius.push_back(r);
-    m_phi.push_back(std::atan2(x(1), x(0)));
+    m_phi.push_back(std::atan2(s(1), s(0)));
   }
 }
 
@@ -124,7 +145,7 @@ RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& 
     positions.push_back(node->x);
     index.push_back(slots);
   }
-  return RigidCasing(positions, index, gap, omega, sliding_omega);
+  return RigidCasing(positions, index, gap, omega, sliding_omega, component.rotation_axis);
 }
 
 } // namespace rsi

@@ -3,12 +3,21 @@
 // side's own 3D node-to-rigid-surface geometry, written from
 // ../shared/external/rotor37/README.md and not from reference/contact).
 //
-// Per contact node c (undeformed position x_c, polar radius r_c = |(x, y)|,
-// polar angle phi_c = atan2(y, x)), a fixed orthonormal contact frame
-//   e_n  = -(x, y, 0) / r_c          (inward: a displacement along e_n opens the gap)
-//   e_t1 = (0, 0, 1)                 (axial)
-//   e_t2 = e_n x e_t1 = (-sin phi, cos phi, 0)   (the counter-clockwise tangent)
-// stored as the rows of F_c = [e_n; e_t1; e_t2].
+// Axis coordinates. The rotation axis a (unit, through the origin; z by
+// default) completes a right-handed orthonormal basis (b_1, b_2, a): b_1 is
+// the coordinate axis next, in the cycle x -> y -> z -> x, to the one a is
+// nearest (first of the largest |a_k|), minus its part along a, and
+// b_2 = a x b_1 (about z: b_1 = x, b_2 = y; about x: b_1 = y, b_2 = z).
+// The rows of Q = [b_1; b_2; a] take a point to axis coordinates
+// (s_1, s_2, s_3) = Q x_c.
+// Per contact node c (undeformed position x_c, polar radius
+// r_c = |(s_1, s_2)|, polar angle phi_c = atan2(s_2, s_1)), a fixed
+// orthonormal contact frame, written in axis coordinates and taken back by Q^T:
+//   e_n  = Q^T (-s_1, -s_2, 0) / r_c (inward: a displacement along e_n opens the gap)
+//   e_t1 = Q^T (0, 0, 1) = a         (axial)
+//   e_t2 = e_n x e_t1 = Q^T (-sin phi, cos phi, 0)   (the counter-clockwise tangent about a)
+// stored as the rows of F_c = [e_n; e_t1; e_t2]. About z, Q = I and
+// e_n = -(x, y, 0) / r_c, phi_c = atan2(y, x).
 //
 // Normal gap. The casing surface lies at g(t) from the undeformed node
 // along -e_n (outward); a displacement u_c of the node moves it by -e_n.u_c
@@ -67,12 +76,14 @@ public:
   /// its ux, uy, uz in the component's boundary list (the order of
   /// ReducedBasis::boundary_position). omega: rotation speed of the gap
   /// phase [rad/s], finite, signed; sliding_omega: Omega_s of the header,
-  /// finite (0: the casing does not slide). Throws std::invalid_argument
-  /// for a node on the axis (r_c = 0), a gap out of range, sizes that do not
-  /// match, or a repeated or negative boundary index.
+  /// finite (0: the casing does not slide). axis: a of the header, finite
+  /// and nonzero (normalised here). Throws std::invalid_argument for a node
+  /// on the axis (r_c = 0), a gap out of range, sizes that do not match, a
+  /// zero or non-finite axis, or a repeated or negative boundary index.
   RigidCasing(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
-              double omega, double sliding_omega);
+              double omega, double sliding_omega,
+              const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ());
   /// The physical case: Omega_s = Omega.
   RigidCasing(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
@@ -106,9 +117,9 @@ private:
 
 /// The rigid casing over the contact nodes `node_ids` of a component whose
 /// boundary holds their ux, uy, uz (3D solid nodes, CalculiX directions
-/// 1..3). Throws std::invalid_argument naming the node when it has no
-/// coordinates, or one of its three translations is not a boundary dof.
-/// sliding_omega: Omega_s of the header (omega in the physical case).
+/// 1..3), about the component's rotation_axis. Throws std::invalid_argument naming the node when it
+/// has no coordinates, or one of its three translations is not a boundary dof. sliding_omega:
+/// Omega_s of the header (omega in the physical case).
 RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
                             const CasingGap& gap, double omega, double sliding_omega);
 inline RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,

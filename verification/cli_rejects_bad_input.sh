@@ -491,6 +491,82 @@ for cmd in modes export reduce; do
   expect 2 "mm/nodes/dofs.csv: node 2 has dofs but no line in nodes.csv" -- "$rsi" "$cmd" "$work/mm-nodes.json" "${extra[@]}" --out "$work/out"
 done
 
+# Hardening, third round (classes 1, 2, 5): declared sizes checked before
+# anything is sized by them; a general file holding one triangle; keys read
+# and refused with exit 2 naming them, where they ended as exit 1 with
+# internal names or ran with no effect.
+# A size line of 2e9 rows: was minutes and 23 GB before the mismatch (the
+# timeout stands for "at once": the check precedes any allocation).
+mm_variant huge-rows K.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n2000000000 2000000000 1\n1 1 4\n'
+mm_variant huge-count M.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 5000000000000\n1 1 1\n'
+# general: the lower triangle only (mirrored and used as symmetric before);
+# both triangles, equal, pass.
+mm_variant general-lower K.mtx '%%%%MatrixMarket matrix coordinate real general\n6 6 7\n1 1 4\n4 1 -1\n2 2 4\n3 3 4\n4 4 2\n5 5 2\n6 6 2\n'
+mm_variant general-both K.mtx '%%%%MatrixMarket matrix coordinate real general\n6 6 8\n1 1 4\n4 1 -1\n1 4 -1\n2 2 4\n3 3 4\n4 4 2\n5 5 2\n6 6 2\n'
+# K vanishing against M: a Young's modulus of 1e-300 (was exit 1,
+# "TridiagEigen: eigen decomposition failed").
+mm_variant vanishing K.mtx '%%%%MatrixMarket matrix coordinate real symmetric\n6 6 7\n1 1 4e-300\n4 1 -1e-300\n2 2 4e-300\n3 3 4e-300\n4 4 2e-300\n5 5 2e-300\n6 6 2e-300\n'
+for cmd in modes export; do
+  extra=()
+  [ "$cmd" = modes ] && extra=(--count 3) # of the 6 dofs
+  expect 2 "mm/huge-rows/K.mtx: 2000000000 rows, but dofs.csv lists 6 dofs" -- timeout 20 "$rsi" "$cmd" "$work/mm-huge-rows.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/huge-count/M.mtx:2: the size line announces 5000000000000 entries, more than the 21 a symmetric (lower triangle) 6 x 6 matrix holds" -- timeout 20 "$rsi" "$cmd" "$work/mm-huge-count.json" "${extra[@]}" --out "$work/out"
+  expect 2 "mm/general-lower/K.mtx:4: not symmetric: (4, 1) = -1 but (1, 4) is not given (0); a general file stores both triangles" -- "$rsi" "$cmd" "$work/mm-general-lower.json" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'component.source.matrix_market': the stiffness vanishes against the mass: K_ii / M_ii, the scale of omega^2, is at most 4e-300" -- "$rsi" "$cmd" "$work/mm-vanishing.json" "${extra[@]}" --out "$work/out"
+done
+expect 0 "wrote" -- "$rsi" export "$work/mm-general-both.json" --out "$work/out-general"
+if [ -e "$work/out-general/tiny/K.mtx" ] && cmp -s "$work/out-general/tiny/K.mtx" "$work/mm/tiny/K.mtx"; then
+  passes=$((passes + 1))
+  echo "ok   a general K.mtx holding both triangles reads as the symmetric one (re-exported byte for byte)"
+else
+  failures=$((failures + 1))
+  echo "FAIL a general K.mtx holding both triangles: not re-exported as the symmetric one"
+fi
+# A component name starting with '.': was exit 1 "StagedOutput::publish: ...
+# is in no entry of the command's output set".
+printf '{"component": {"name": ".hidden", "source": {"matrix_market": "mm/tiny"}, "units": "N"}}\n' >"$work/name-dot.json"
+printf '{"component": {"name": ".rsi-stage-1", "source": {"matrix_market": "mm/tiny"}, "units": "N"}}\n' >"$work/name-stage.json"
+for name in dot stage; do
+  expect 2 "key 'component.name': must be a plain folder name (no '/' or '\\', not starting with '.')" -- "$rsi" export "$work/name-$name.json" --out "$work/out"
+done
+# rubbing.contact_nodes repeated, unknown, clamped, off the boundary: were
+# exit 1 naming RigidSurfaceContact / rigid_surface_nodes (or, off the
+# boundary, a full run that the reduced ones refuse).
+rubbing_variant contact-twice "{$rub, \"friction_coefficient\": 0.1, \"contact_nodes\": [2, 2]}"
+rubbing_variant contact-unknown "{$rub, \"friction_coefficient\": 0.1, \"contact_nodes\": [2, 99]}"
+for method in full cb; do
+  extra=()
+  [ "$method" = cb ] && extra=(--modes 1)
+  expect 2 "key 'rubbing.contact_nodes': contact node 2 is listed twice" -- "$rsi" simulate "$work/rubbing-contact-twice.json" --method "$method" "${extra[@]}" --out "$work/out"
+  expect 2 "key 'rubbing.contact_nodes': contact node 99 is not a node of tiny" -- "$rsi" simulate "$work/rubbing-contact-unknown.json" --method "$method" "${extra[@]}" --out "$work/out"
+done
+# A run's steps counted in 64 bits before it starts. At 1e-4 rad/s the
+# tiny model (stability limit 0.952 s) takes k = 7334 steps a sample of
+# T/N = 628.3 s; 58,562.5 revolutions of 10 samples make 585,625 x 7334 =
+# 4,294,973,750 steps, which a 32-bit count wrapped to 6,454: both runs
+# stopped there and reported "completed" with exit 0 (0.88 of one sample).
+rubbing_variant wrap "{\"gap\": {\"oval\": {\"g_m\": 0.1, \"width\": 0.15}}, \"friction_coefficient\": 0.1, \"rotation_speed\": 0.0001, \"revolutions\": 58562.5, \"steps_per_revolution\": 10, \"response\": {\"node\": 2, \"direction\": 2}}"
+expect 2 "keys 'rubbing.revolutions' and 'rubbing.steps_per_revolution': 585625 samples x 7334 steps a sample (the full run steps at" -- "$rsi" simulate "$work/rubbing-wrap.json" --method full --out "$work/out"
+expect 2 "keys 'rubbing.revolutions' and 'rubbing.steps_per_revolution': 585625 samples x 7334 steps a sample (the cb run steps at" -- "$rsi" simulate "$work/rubbing-wrap.json" --method cb --modes 1 --out "$work/out"
+expect 2 "= 4294973750 steps, more than the 2147483647 a run can count" -- "$rsi" simulate "$work/rubbing-wrap.json" --method cb --modes 1 --out "$work/out"
+# The gmsh blade's element_size in its range but far past what the run can
+# hold: refused before gmsh from the estimated mesh (was minutes of gmsh
+# and millions of dofs before ccx ran out of memory; the timeout stands for
+# "before gmsh", and no gmsh runs here: the cache is the test's own).
+/usr/bin/python3 "$src/verification/case_variant.py" "$src/data/cases/blade3d.json" "$work/blade-fine.json" \
+  component.source.gmsh_blade.element_size=0.4
+expect 2 "key 'component.source.gmsh_blade.element_size': 0.4 mm gives about 19155396 dofs (estimated before gmsh from the volume" -- timeout 20 "$rsi" modes "$work/blade-fine.json" --ccx-cache "$work/blade-cache" --out "$work/out"
+if [ -e "$work/blade-cache" ]; then
+  failures=$((failures + 1))
+  echo "FAIL element_size 0.4: the ccx cache was written ($(ls "$work/blade-cache" | head -3 | tr '\n' ' '))"
+else
+  passes=$((passes + 1))
+  echo "ok   element_size 0.4: refused before gmsh (no cache entry)"
+fi
+# A history of 2.1e9 samples of one contact node would be 504 GB:
+rubbing_variant history-size "{\"gap\": {\"constant\": 0}, \"friction_coefficient\": 0.1, \"rotation_speed\": 100, \"revolutions\": 21, \"steps_per_revolution\": 100000000, \"response\": {\"node\": 2, \"direction\": 2}}"
+expect 2 "key 'rubbing.output_every': 2100000000 samples (rubbing.revolutions x rubbing.steps_per_revolution) written every 1 would make history.csv about 504 GB (limit 100 GB)" -- timeout 20 "$rsi" simulate "$work/rubbing-history-size.json" --out "$work/out"
+
 # no or unknown subcommand; help
 expect 2 "frobnicate" -- "$rsi" frobnicate "$good"
 expect 2 "a subcommand is required" -- "$rsi"

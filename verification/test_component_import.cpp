@@ -127,4 +127,78 @@ TEST(ComponentImport, CalculixDeckAndJobFiles) {
   EXPECT_EQ(c.nodes[0].id, 2);
 }
 
+// Matrix Market `general` (hardening, third round, class 1): a general file
+// is the whole matrix, so an entry whose mirror is missing stands beside a
+// zero and the pair must agree within 1e-12 of the largest entry (the lower
+// triangle alone was mirrored and used as symmetric).
+TEST(MatrixMarketImport, GeneralFileMustHoldBothTriangles) {
+  ScratchDir dir;
+  const fs::path one = dir.path / "one.mtx";
+  const fs::path both = dir.path / "both.mtx";
+  const fs::path lower = dir.path / "lower.mtx";
+  const fs::path tiny = dir.path / "tiny.mtx";
+  write(one, "%%MatrixMarket matrix coordinate real general\n3 3 4\n1 1 4\n2 1 -1\n2 2 4\n3 3 4\n");
+  write(both, "%%MatrixMarket matrix coordinate real general\n3 3 5\n1 1 4\n2 1 -1\n1 2 -1\n2 2 "
+              "4\n3 3 4\n");
+  write(lower,
+        "%%MatrixMarket matrix coordinate real symmetric\n3 3 4\n1 1 4\n2 1 -1\n2 2 4\n3 3 4\n");
+  // An unmirrored entry of 3e-12 x the largest (4) is within the tolerance: kept, mirrored.
+  write(tiny,
+        "%%MatrixMarket matrix coordinate real general\n3 3 4\n1 1 4\n3 1 3e-12\n2 2 4\n3 3 4\n");
+  std::string message;
+  try {
+    rsi::read_symmetric_matrix_market(one.string(), false);
+  } catch (const rsi::ImportError& e) {
+    message = e.what();
+  }
+  std::printf("general, one triangle -> %s\n", message.c_str());
+  EXPECT_NE(message.find("one.mtx:4: not symmetric: (2, 1) = -1 but (1, 2) is not given (0)"),
+            std::string::npos)
+      << message;
+  const Eigen::SparseMatrix<double> a = rsi::read_symmetric_matrix_market(both.string(), false);
+  const Eigen::SparseMatrix<double> b = rsi::read_symmetric_matrix_market(lower.string(), false);
+  // The general file with both triangles and the symmetric one with the
+  // lower: the same matrix, bit for bit (the same decimal text, from_chars).
+  EXPECT_EQ(bitwise_differences(a, b), 0);
+  const Eigen::SparseMatrix<double> c = rsi::read_symmetric_matrix_market(tiny.string(), false);
+  EXPECT_EQ(c.coeff(0, 2), 3e-12);
+  EXPECT_EQ(c.coeff(2, 0), 3e-12);
+}
+
+// The size line is checked before anything is sized by it (class 2): a
+// declared 2e9 rows against the dofs expected, an entry count beyond what
+// the size holds or what the file has, each refused at once (a size line
+// of 2e9 rows took minutes and 23 GB before the mismatch was reported).
+TEST(MatrixMarketImport, DeclaredSizeCheckedBeforeAllocation) {
+  ScratchDir dir;
+  const fs::path rows = dir.path / "rows.mtx";
+  const fs::path count = dir.path / "count.mtx";
+  const fs::path more = dir.path / "more.mtx";
+  write(rows, "%%MatrixMarket matrix coordinate real symmetric\n2000000000 2000000000 1\n1 1 4\n");
+  write(count, "%%MatrixMarket matrix coordinate real symmetric\n3 3 7\n1 1 4\n");
+  write(more, "%%MatrixMarket matrix coordinate real general\n3 3 2\n1 1 4\n2 2 4\n3 3 4\n");
+  const auto message_of = [](const fs::path& p, long expected) {
+    try {
+      rsi::read_symmetric_matrix_market(p.string(), false, expected);
+    } catch (const rsi::ImportError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string m1 = message_of(rows, 6);
+  const std::string m2 = message_of(count, 3);
+  const std::string m3 = message_of(more, 3);
+  std::printf("2e9 rows -> %s\n7 entries in 3 x 3 -> %s\n3 lines, 2 declared -> %s\n", m1.c_str(),
+              m2.c_str(), m3.c_str());
+  EXPECT_NE(m1.find("rows.mtx: 2000000000 rows, but dofs.csv lists 6 dofs"), std::string::npos)
+      << m1;
+  EXPECT_NE(m2.find("count.mtx:2: the size line announces 7 entries, more than the 6 a symmetric "
+                    "(lower triangle) 3 x 3 matrix holds"),
+            std::string::npos)
+      << m2;
+  EXPECT_NE(m3.find("more.mtx: the size line announces 2 entries, the file holds 3"),
+            std::string::npos)
+      << m3;
+}
+
 } // namespace

@@ -90,15 +90,15 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
     ro.output_every = every;
     out.summary =
         run_component(integrator, basis.transformation.row(response_dof), ro, out.history);
-    std::printf("%s-10: r %d, critical dt %.4e s, dt %.4e s, %d steps in %.3f s, %s; penetration "
+    std::printf("%s-10: r %d, critical dt %.4e s, dt %.4e s, %lld steps in %.3f s, %s; penetration "
                 "%.2e mm, cone %.2e N, stick/slip residual %.2e, slip %ld, stick %ld "
                 "contact-steps; balance %.3e of %.3e N mm\n",
-                method.c_str(), out.r, out.summary.critical_dt, out.summary.dt, out.summary.steps,
-                out.summary.integration_seconds, out.summary.status.c_str(),
-                out.summary.max_penetration, out.summary.max_cone_violation,
-                out.summary.max_stick_slip_residual, out.summary.slip_contact_steps,
-                out.summary.stick_contact_steps, out.summary.energy_balance_error,
-                out.summary.energy_scale);
+                method.c_str(), out.r, out.summary.critical_dt, out.summary.dt,
+                static_cast<long long>(out.summary.steps), out.summary.integration_seconds,
+                out.summary.status.c_str(), out.summary.max_penetration,
+                out.summary.max_cone_violation, out.summary.max_stick_slip_residual,
+                out.summary.slip_contact_steps, out.summary.stick_contact_steps,
+                out.summary.energy_balance_error, out.summary.energy_scale);
     return out;
   };
   // MacNeal at 1000 steps a revolution: below its critical step (2/omega_10
@@ -216,9 +216,10 @@ TEST(ComponentRubbing, MacNealPastItsHeldBoundaryLimitIsStoppedAsARunaway) {
     double peak = 0.0;
     for (double x : h.response)
       peak = std::max(peak, std::abs(x));
-    std::printf("MacNeal-50, dt %.4e s (free limit %.4e s, held %.4e s): %d steps, %s; peak "
+    std::printf("MacNeal-50, dt %.4e s (free limit %.4e s, held %.4e s): %lld steps, %s; peak "
                 "response %.3e mm\n",
-                o.dt, integrator.critical_dt(), held_dt, s.steps, s.status.c_str(), peak);
+                o.dt, integrator.critical_dt(), held_dt, static_cast<long long>(s.steps),
+                s.status.c_str(), peak);
     return std::make_pair(s, peak);
   };
   ASSERT_GT(period / 1000, held_dt) << "the blade no longer shows the case this test is about";

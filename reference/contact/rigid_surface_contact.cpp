@@ -30,13 +30,27 @@ double ImposedGap::operator()(double theta) const {
 }
 
 RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap,
-                                         double omega, double mu, double sliding_omega)
+                                         double omega, double mu, double sliding_omega,
+                                         const Eigen::Vector3d& axis)
     : m_nodes(std::move(nodes))
     , m_gap(gap)
     , m_omega(omega)
     , m_mu(mu)
-    , m_sliding_omega(sliding_omega) {
+    , m_sliding_omega(sliding_omega)
+    , m_axis(axis) {
   const std::string where = "RigidSurfaceContact: ";
+  if (!(axis.allFinite() && axis.norm() > 0.0))
+    throw std::invalid_argument(where + "axis (" + str(axis(0)) + ", " + str(axis(1)) + ", " +
+                                str(axis(2)) + "), allowed finite and nonzero");
+  m_axis.normalize();
+  // e_1: the coordinate axis after the one nearest to a, made normal to a;
+  // e_2 = a x e_1 (header).
+  int nearest = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(m_axis(k)) > std::abs(m_axis(nearest))) nearest = k;
+  const Eigen::Vector3d next = Eigen::Vector3d::Unit((nearest + 1) % 3);
+  const Eigen::Vector3d e1 = (next - next.dot(m_axis) * m_axis).normalized();
+  const Eigen::Vector3d e2 = m_axis.cross(e1);
   if (m_nodes.empty())
     throw std::invalid_argument(where + "nodes is empty, allowed at least one contact node");
   if (gap.kind == ImposedGap::Kind::constant) {
@@ -72,15 +86,19 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, co
     const Eigen::Vector3d& x = node.position;
     if (!x.allFinite())
       throw std::invalid_argument(where + "node " + std::to_string(c) + " position must be finite");
-    const double r = std::hypot(x(0), x(1));
+    const double p1 = e1.dot(x);
+    const double p2 = e2.dot(x);
+    const double r = std::hypot(p1, p2);
     if (!(r > 0.0))
       throw std::invalid_argument(where + "node " + std::to_string(c) +
                                   " lies on the rotation axis (r = 0), allowed r > 0");
     ContactFrame f;
     f.radius = r;
-    f.angle = std::atan2(x(1), x(0));
-    f.normal = Eigen::Vector3d(-x(0) / r, -x(1) / r, 0.0);
-    f.tangent1 = Eigen::Vector3d::UnitZ();
+    f.angle = std::atan2(p2, p1);
+    // Adding +0.0 turns the -0 of a component along the axis into +0: a
+    // model about z keeps its frames bit for bit.
+    f.normal = ((-(p1 / r) * e1 - (p2 / r) * e2).array() + 0.0).matrix();
+    f.tangent1 = m_axis;
     f.tangent2 = f.normal.cross(f.tangent1);
     m_frames.push_back(f);
   }

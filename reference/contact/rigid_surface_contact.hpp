@@ -4,13 +4,22 @@
 // at -Omega past the contact nodes of a blade (seen in the blade's frame),
 // with a gap imposed as a function of time and node.
 //
-// Per contact node c, from its undeformed position X = (x, y, z), with
-// radius r = |(x, y)| > 0 and polar angle phi = atan2(y, x):
-//   frame    e_n  = -(x, y, 0) / r    (inward: a displacement along e_n opens)
-//            e_t1 = (0, 0, 1)         (axial)
-//            e_t2 = e_n x e_t1 = (-sin phi, cos phi, 0)
+// The rotation axis a (unit, through the origin; z by default) and two
+// unit vectors e_1, e_2 with (e_1, e_2, a) orthonormal and right-handed:
+// e_1 the coordinate axis that follows, in the cycle x -> y -> z -> x, the
+// one nearest to a (the first of the largest |a_k|), with its component
+// along a removed, and e_2 = a x e_1. About z that is e_1 = x, e_2 = y;
+// about x, e_1 = y, e_2 = z (a model turned by the cyclic permutation
+// x -> y -> z -> x keeps its polar angles).
+// Per contact node c, from its undeformed position X, with the components
+// p_1 = e_1 . X, p_2 = e_2 . X across the axis, radius r = |(p_1, p_2)| > 0
+// and polar angle phi = atan2(p_2, p_1):
+//   frame    e_n  = -(p_1 e_1 + p_2 e_2) / r   (inward: a displacement along e_n opens)
+//            e_t1 = a                          (axial)
+//            e_t2 = e_n x e_t1 = -sin phi e_1 + cos phi e_2
 //            (e_n, e_t1, e_t2) orthonormal and right-handed; e_t2 points
-//            along a counter-clockwise rotation about z.
+//            along a counter-clockwise rotation about a. About z:
+//            e_n = -(x, y, 0) / r, e_t1 = (0, 0, 1), phi = atan2(y, x).
 //   gap      g_c(t, u) = g0_c(t) + e_n . u_c        (> 0 open)
 //            g0 constant, or the oval casing of the README:
 //            g0(t) = g_m (1 - 2 exp(-((mod(theta, pi)/pi - 1/2)/w)^2)),
@@ -74,8 +83,8 @@ struct ContactFrame {
   Eigen::Vector3d normal;   ///< e_n
   Eigen::Vector3d tangent1; ///< e_t1
   Eigen::Vector3d tangent2; ///< e_t2
-  double radius = 0.0;      ///< r = |(x, y)|
-  double angle = 0.0;       ///< phi = atan2(y, x)
+  double radius = 0.0;      ///< r = |(p_1, p_2)|, the distance from the axis
+  double angle = 0.0;       ///< phi = atan2(p_2, p_1)
 };
 
 class RigidSurfaceContact : public FrictionalContactLaw {
@@ -83,10 +92,12 @@ public:
   /// nodes: at least one; dofs >= 0 and all distinct; positions finite with
   /// r > 0. gap: constant finite, or oval with g_m > 0 and width > 0 finite.
   /// omega finite (any sign; 0: no sliding, constant oval). mu >= 0 finite.
-  /// sliding_omega: Omega_s of the header, finite. Throws
+  /// sliding_omega: Omega_s of the header, finite. axis: the rotation
+  /// axis through the origin, finite and nonzero (normalised here). Throws
   /// std::invalid_argument naming the parameter and its range.
   RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap, double omega,
-                      double mu, double sliding_omega);
+                      double mu, double sliding_omega,
+                      const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ());
   /// The physical case, Omega_s = Omega.
   RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, const ImposedGap& gap, double omega,
                       double mu)
@@ -111,6 +122,7 @@ public:
   /// The casing's velocity at the node, -r Omega_s e_t2.
   Eigen::Vector3d casing_velocity(int contact) const;
   double rotation_speed() const { return m_omega; }
+  const Eigen::Vector3d& axis() const { return m_axis; }
   double sliding_speed() const { return m_sliding_omega; }
 
 private:
@@ -120,6 +132,7 @@ private:
   double m_omega;
   double m_mu;
   double m_sliding_omega;
+  Eigen::Vector3d m_axis; ///< a, unit
 };
 
 /// The contact nodes `node_ids` of a 3D component (dof kinds ux, uy, uz,

@@ -47,17 +47,28 @@ int run_ccx(const std::string& ccx, const fs::path& dir) {
   return r.exit_status;
 }
 
-/// The lines of ccx's log that say what went wrong.
+/// The lines of ccx's log that say what went wrong: each *ERROR line with
+/// the indented lines that continue it (ccx cuts its messages over several
+/// lines: "*ERROR reading *ELASTIC: the Young" / "modulus should exceed 0.0").
 std::string error_lines(const fs::path& log) {
   std::ifstream in(log);
   std::string line;
   std::string out;
   int kept = 0;
-  while (std::getline(in, line) && kept < 8)
+  bool continuing = false;
+  while (std::getline(in, line) && kept < 16) {
+    const bool blank = line.find_first_not_of(" \t\r") == std::string::npos;
     if (line.find("ERROR") != std::string::npos) {
       out += "\n  " + line;
       ++kept;
+      continuing = true;
+    } else if (continuing && !blank && (line[0] == ' ' || line[0] == '\t')) {
+      out += " " + line.substr(line.find_first_not_of(" \t"));
+      ++kept;
+    } else {
+      continuing = false;
     }
+  }
   return out.empty() ? " (no *ERROR line in " + log.string() + ")" : out;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
+#include <sstream>
 
 #include <unistd.h>
 #include <filesystem>
@@ -102,11 +104,41 @@ GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
   return spec;
 }
 
-/// The deck of the gmsh blade, in CACHE/gmsh-blade-<hash of its script>/.
-std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_dir) {
-  const std::string geo = gmsh_blade_geo(spec);
+/// `text` with every occurrence of `from` replaced by `to`.
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+/// A tool's multi-line report as one line of a message: its lines trimmed,
+/// the empty ones dropped, joined by " | ".
+std::string one_line(const std::string& text) {
+  std::string out;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    const size_t a = line.find_first_not_of(" \t\r");
+    if (a != std::string::npos) {
+      const size_t b = line.find_last_not_of(" \t\r");
+      out += (out.empty() ? "" : " | ") + line.substr(a, b - a + 1);
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+/// The deck of the gmsh blade, in CACHE/gmsh-blade-<hash>/, the hash of
+/// everything the deck is made of (gmsh_blade_cache_key: the script and
+/// the material), so that a changed material never reads an older deck.
+/// A gmsh failure keeps its folder as CACHE/gmsh-blade-<hash>.failed (the
+/// script and gmsh.log the message names), as ccx's failures are kept.
+std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_dir,
+                            const std::string& case_path) {
+  const std::string key = gmsh_blade_cache_key(spec);
   std::uint64_t h = 14695981039346656037ull;
-  for (unsigned char ch : geo) {
+  for (unsigned char ch : key) {
     h ^= ch;
     h *= 1099511628211ull;
   }
@@ -121,8 +153,15 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
   try {
     write_gmsh_blade_deck(spec, work.string());
   } catch (const GmshError& e) {
-    std::filesystem::remove_all(work, ec);
-    throw ImportError(std::string("component.source.gmsh_blade: ") + e.what());
+    std::filesystem::path failed = entry;
+    failed += ".failed";
+    std::filesystem::remove_all(failed, ec);
+    std::filesystem::rename(work, failed, ec);
+    const std::string kept = ec ? work.string() : failed.string();
+    std::string what = replace_all(e.what(), work.string(), kept);
+    const std::string prefix = "write_gmsh_blade_deck: ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    throw ImportError(case_path + ": key 'component.source.gmsh_blade': " + one_line(what));
   } catch (const std::runtime_error& e) {
     std::filesystem::remove_all(work, ec);
     throw ImportError(std::string("--ccx-cache: ") + e.what());
@@ -218,6 +257,63 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
   return out;
 }
 
+/// "key '...'" of the model's source, for messages about the model itself.
+std::string source_key(const ComponentCase& c, const ComponentLoadOptions& options, bool material) {
+  if (!options.source_override.empty())
+    return "key 'component.source' (replaced by --source '" + options.source_override + "')";
+  switch (c.source) {
+  case ComponentSource::matrix_market:
+    return "key 'component.source.matrix_market'";
+  case ComponentSource::gmsh_blade:
+    return material ? "keys 'component.source.gmsh_blade.young_modulus' and "
+                      "'component.source.gmsh_blade.density'"
+                    : "key 'component.source.gmsh_blade'";
+  case ComponentSource::calculix_deck:
+    break;
+  }
+  return c.calculix_matrices.empty() ? "key 'component.source.calculix_deck'"
+                                     : "key 'component.source.calculix_matrices'";
+}
+
+/// The model's stiffness against its mass. The diagonal ratios K_ii / M_ii
+/// are the Rayleigh quotients of the unit vectors, so they lie between
+/// omega_min^2 and omega_max^2 [rad^2 / time^2]: the scale of the
+/// eigenvalues. Every eigensolver works on omega^2 or its inverse and
+/// squares them (Lanczos, the tridiagonal eigenproblem): with every ratio
+/// below 1e-100 or every ratio above 1e100 that over- or underflows a
+/// double (about 1e+-308), and no structure has frequencies of 1e-50 or
+/// 1e50 Hz.
+/// A vanishing Young's modulus (1e-300 N/mm^2: K about 1e-299) is refused
+/// here, naming the material's keys, where it reached the eigensolvers
+/// and failed there with their internal names.
+void check_frequency_scale(const Component& component, const ComponentCase& c,
+                           const ComponentLoadOptions& options) {
+  double largest = 0.0;
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < component.n_dofs(); ++i) {
+    const double ratio = component.stiffness.coeff(i, i) / component.mass.coeff(i, i);
+    largest = std::max(largest, ratio);
+    smallest = std::min(smallest, ratio);
+  }
+  constexpr double low = 1e-100, high = 1e100;
+  if (largest >= low && smallest <= high) return;
+  std::ostringstream m;
+  m.precision(3);
+  m << c.case_path << ": " << source_key(c, options, true) << ": ";
+  if (largest < low)
+    m << "the stiffness vanishes against the mass: K_ii / M_ii, the scale of omega^2, is at "
+         "most "
+      << largest << " 1/time^2 on every one of the " << component.n_dofs() << " dofs";
+  else
+    m << "the mass vanishes against the stiffness: K_ii / M_ii, the scale of omega^2, is at "
+         "least "
+      << smallest << " 1/time^2 on every one of the " << component.n_dofs() << " dofs";
+  m << " (allowed: in [1e-100, 1e100] on some dof, where the eigensolvers' squares of omega^2 "
+       "and 1/omega^2 stay within double precision); check the Young's modulus, the density "
+       "and their units";
+  throw ImportError(m.str());
+}
+
 } // namespace
 
 bool is_component_case(const json& document) {
@@ -232,8 +328,12 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   const json& cj = document.contains("component") ? document.at("component") : json();
   ObjectReader comp = top.object("component");
   c.name = string_value(comp, cj, "name");
-  if (c.name.find_first_of("/\\") != std::string::npos || c.name == "." || c.name == "..")
-    comp.fail(comp.full("name"), "must be a plain folder name (no '/'), got '" + c.name + "'");
+  // A name starting with '.' is a hidden folder, and rsi's own staging and
+  // lock entries in --out start with '.rsi-'.
+  if (c.name.find_first_of("/\\") != std::string::npos || c.name.front() == '.')
+    comp.fail(comp.full("name"),
+              "must be a plain folder name (no '/' or '\\', not starting with '.'), got '" +
+                  c.name + "'");
 
   const json& sj = cj.contains("source") ? cj.at("source") : json();
   ObjectReader source = comp.object("source");
@@ -368,7 +468,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
         source, c.name, c.boundary_from_dofs ? nullptr : &c.boundary_nodes);
   } else {
     if (c.source == ComponentSource::gmsh_blade && options.source_override.empty())
-      source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache);
+      source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
     if (!std::filesystem::is_regular_file(source))
       throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
                         "' is not a file (the deck; --source overrides it)");
@@ -388,7 +488,20 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
         throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
                           std::to_string(id) + " is not a node of the deck " + source);
     const bool ran_ccx = c.calculix_matrices.empty();
-    const std::string job = ran_ccx ? calculix_matrices(deck, options.ccx_cache) : c.calculix_matrices;
+    std::string job = c.calculix_matrices;
+    if (ran_ccx) {
+      try {
+        job = calculix_matrices(deck, options.ccx_cache);
+      } catch (const ImportError& e) {
+        // ccx refused the model (its *ERROR lines follow): the source's key.
+        // A missing, unstartable or killed ccx, or an unusable cache, is not
+        // the case's fault and keeps its own message.
+        const std::string what = e.what();
+        if (what.find(": ccx failed on the model") == std::string::npos) throw;
+        throw ImportError(c.case_path + ": " + source_key(c, options, false) + ": " +
+                          one_line(what));
+      }
+    }
     try {
       component = read_calculix_component(job, deck, boundary, c.name);
     } catch (const ImportError& e) {
@@ -399,6 +512,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                         options.ccx_cache + ") are not a component: " + e.what());
     }
   }
+  check_frequency_scale(component, c, options);
   component.units = c.units;
   component.rotation_axis = c.rotation_axis;
   if (c.lumped_mass) component.mass = hrz_lumped_mass(component);

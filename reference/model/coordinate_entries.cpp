@@ -118,7 +118,7 @@ void check_positive_diagonal(const CoordinateEntries& e, int n, const std::strin
 }
 
 Eigen::SparseMatrix<double> symmetric_matrix(const CoordinateEntries& e, int n,
-                                             const std::string& path) {
+                                             const std::string& path, MirrorRule rule) {
   const size_t m = e.size();
   // Group the entries by their position in the lower triangle.
   std::vector<size_t> order(m);
@@ -162,6 +162,17 @@ Eigen::SparseMatrix<double> symmetric_matrix(const CoordinateEntries& e, int n,
             << "; they must agree within 1e-12 x the largest entry " << largest;
         throw ImportError(why.str());
       }
+    }
+    if (h - g == 1 && !diagonal && rule == MirrorRule::both_triangles &&
+        std::abs(e.value[a]) > 1e-12 * largest) {
+      std::ostringstream why;
+      why.precision(17);
+      why << path << ":" << e.line[a] << ": not symmetric: (" << e.row[a] + 1 << ", "
+          << e.col[a] + 1 << ") = " << e.value[a] << " but (" << e.col[a] + 1 << ", "
+          << e.row[a] + 1 << ") is not given (0); a general file stores both triangles, "
+          << "which must agree within 1e-12 x the largest entry " << largest
+          << " (for one triangle write 'symmetric' and the lower one)";
+      throw ImportError(why.str());
     }
     triplets.emplace_back(e.row[a], e.col[a], e.value[a]);
     if (!diagonal) triplets.emplace_back(e.col[a], e.row[a], e.value[a]);

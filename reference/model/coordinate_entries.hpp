@@ -34,12 +34,24 @@ std::string read_whole_file(const std::string& path);
 CoordinateEntries parse_coordinate_entries(std::string_view text, size_t offset, int first_line,
                                            int n, const std::string& path);
 
-/// The n x n symmetric matrix of entries given in either triangle or both
-/// (a mirrored pair must agree within 1e-12 of the largest entry), both
-/// triangles stored. Throws ImportError naming `path` and the lines of an
-/// entry given twice or of a pair that disagrees.
+/// What an entry without its mirror (j, i) means.
+enum class MirrorRule {
+  /// The file stores one triangle of a symmetric matrix (or some entries in
+  /// both, as ccx's files may): the missing mirror is the entry itself.
+  one_triangle,
+  /// The file stores the whole matrix (Matrix Market `general`): a missing
+  /// mirror is a zero, and the pair (v, 0) must agree like any other.
+  both_triangles
+};
+
+/// The n x n symmetric matrix of the entries, both triangles stored. A
+/// mirrored pair must agree within 1e-12 of the largest entry (with
+/// MirrorRule::both_triangles an entry without its mirror is paired with
+/// 0). Throws ImportError naming `path` and the lines of an entry given
+/// twice or of a pair that disagrees.
 Eigen::SparseMatrix<double> symmetric_matrix(const CoordinateEntries& entries, int n,
-                                             const std::string& path);
+                                             const std::string& path,
+                                             MirrorRule rule = MirrorRule::one_triangle);
 
 /// Every diagonal entry given and positive (a mass matrix); throws
 /// ImportError naming `path` and the line of a non-positive one, or the

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <locale>
 #include <map>
@@ -227,6 +228,38 @@ void check_gmsh_blade_spec(const GmshBladeSpec& s) {
   require("poisson_ratio", s.poisson_ratio, -1.0, true, 0.5, true, "");
   require("density", s.density, 0.0, true, inf, true, "t/mm^3");
   require("root_radius", s.root_radius, 0.0, false, inf, true, "mm");
+  const GmshBladeMeshEstimate size = gmsh_blade_mesh_estimate(s);
+  if (!(size.dofs <= gmsh_blade_max_estimated_dofs)) {
+    std::ostringstream m;
+    m.imbue(std::locale::classic());
+    m << "GmshBladeSpec.element_size: " << number(s.element_size) << " mm gives about "
+      << std::fixed << std::setprecision(0) << size.dofs
+      << " dofs (estimated before gmsh from the volume: " << size.elements
+      << " quadratic tetrahedra, within a factor 2 of gmsh's meshes), more than the "
+      << gmsh_blade_max_estimated_dofs
+      << " allowed (the finest mesh measured, element_size 5/3 mm: 149,865 dofs, estimated "
+         "264,804); "
+         "use a larger element_size, or mesh the blade yourself and give its deck as "
+         "component.source.calculix_deck";
+    throw std::invalid_argument(m.str());
+  }
+}
+
+GmshBladeMeshEstimate gmsh_blade_mesh_estimate(const GmshBladeSpec& s) {
+  // A regular tetrahedron of edge h has the volume h^3 / (6 sqrt 2). The
+  // root block fills with them; the plate, thinner than h at coarse sizes,
+  // still needs about one element across its thickness t, so its elements
+  // are h x h x min(h, t). Second-order tetrahedra carry about 2 nodes an
+  // element (1.7 to 2.2 in the table of gmsh_blade.hpp), 3 dofs a node.
+  const double tet = 1.0 / (6.0 * std::sqrt(2.0));
+  const double h = s.element_size;
+  const double block = s.root_length * s.root_width * s.root_height;
+  const double plate = SectionShape(s).area() * s.span;
+  GmshBladeMeshEstimate e;
+  e.elements = block / (tet * h * h * h) + plate / (tet * h * h * std::min(h, s.thickness));
+  e.nodes = 2.0 * e.elements;
+  e.dofs = 3.0 * e.nodes;
+  return e;
 }
 
 std::vector<Eigen::Vector3d> gmsh_blade_tip_stations(const GmshBladeSpec& spec) {
@@ -399,6 +432,13 @@ std::set<long> check_elements(const GmshMesh& mesh, double tol, std::string& wha
   return used;
 }
 
+/// The deck's lines after the node sets: material, section, clamping.
+std::string material_and_clamping(const GmshBladeSpec& spec) {
+  return "*MATERIAL, NAME=BLADE_MATERIAL\n*ELASTIC\n" + number(spec.young_modulus) + ", " +
+         number(spec.poisson_ratio) + "\n*DENSITY\n" + number(spec.density) +
+         "\n*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE_MATERIAL\n*BOUNDARY\nROOT, 1, 3\n";
+}
+
 /// The deck: header comment, nodes, elements, node sets, material, section
 /// and clamping.
 void write_deck(std::ostream& out, const GmshBladeSpec& spec, const GmshMesh& mesh,
@@ -430,15 +470,17 @@ void write_deck(std::ostream& out, const GmshBladeSpec& spec, const GmshMesh& me
   }
   write_node_set(out, "ROOT", root);
   write_node_set(out, "TIP", tip);
-  out << "*MATERIAL, NAME=BLADE_MATERIAL\n*ELASTIC\n"
-      << number(spec.young_modulus) << ", " << number(spec.poisson_ratio) << "\n"
-      << "*DENSITY\n"
-      << number(spec.density) << "\n"
-      << "*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE_MATERIAL\n"
-      << "*BOUNDARY\nROOT, 1, 3\n";
+  out << material_and_clamping(spec);
 }
 
 } // namespace
+
+std::string gmsh_blade_cache_key(const GmshBladeSpec& spec) {
+  // The mesh is gmsh's of the script; the rest of the deck is the text
+  // below. The version names the deck writer: a change to what it writes
+  // from the same mesh must change it.
+  return gmsh_blade_geo(spec) + "// deck writer 2\n" + material_and_clamping(spec);
+}
 
 std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& dir) {
   namespace fs = std::filesystem;

@@ -130,8 +130,33 @@ struct GmshBladeSpec {       // units: mm, t, s, N (like Rotor 37)
 /// Number of contact nodes (NSET TIP) at any element size.
 constexpr int n_tip_stations = 16;
 
+/// The mesh size gmsh will make of a spec, estimated from the volume
+/// before gmsh runs: the root block in regular tetrahedra of edge
+/// element_size h (volume h^3 / (6 sqrt 2) each), the blade's plate in
+/// h x h x min(h, thickness) ones (about one element across a plate thinner
+/// than h), 2 nodes an element (second order), 3 dofs a node. Against the
+/// measured table above (default geometry): 0.65 x the dofs at h = 10, 1.0
+/// at h = 5, 1.91 at h = 1.8, 1.77 at h = 5/3: within a factor 2 over the table
+/// (test_gmsh_blade_cache). Does not check the spec.
+struct GmshBladeMeshEstimate {
+  double elements = 0.0;
+  double nodes = 0.0;
+  double dofs = 0.0;
+};
+GmshBladeMeshEstimate gmsh_blade_mesh_estimate(const GmshBladeSpec& spec);
+
+/// The largest estimated dof count check_gmsh_blade_spec accepts: just
+/// above the estimate of the finest mesh measured (element_size 5/3:
+/// 149,865 dofs, estimated 264,804; gmsh 1.5 s, ccx 7.8 s, 189 MB a matrix
+/// file), so every mesh of the table passes and none far past it. The smallest
+/// element_size of the range, chord / 100, would make about 19 million
+/// dofs: minutes of gmsh before ccx runs out of memory.
+constexpr double gmsh_blade_max_estimated_dofs = 300000.0;
+
 /// Throws std::invalid_argument("GmshBladeSpec.FIELD: ... allowed range
-/// ...") for the first field out of range or not finite.
+/// ...") for the first field out of range or not finite, and
+/// ("GmshBladeSpec.element_size: ...") when the estimated mesh
+/// (gmsh_blade_mesh_estimate) exceeds gmsh_blade_max_estimated_dofs.
 void check_gmsh_blade_spec(const GmshBladeSpec& spec);
 
 /// The n_tip_stations contact points on the tip's camber line, in order of
@@ -148,6 +173,12 @@ double gmsh_blade_volume(const GmshBladeSpec& spec);
 /// The gmsh script (OpenCASCADE kernel) of the model, meshing options
 /// included. Checks the spec.
 std::string gmsh_blade_geo(const GmshBladeSpec& spec);
+
+/// Everything blade.inp is made of, as text for a cache key: the gmsh
+/// script (geometry, mesh options) and the deck's material, section and
+/// clamping lines. Two specs with the same key give the same deck. Checks
+/// the spec.
+std::string gmsh_blade_cache_key(const GmshBladeSpec& spec);
 
 /// Writes DIR/blade.geo, runs gmsh (second-order tetrahedra, C3D10) and
 /// writes DIR/blade.inp: a self-contained CalculiX deck of the model only

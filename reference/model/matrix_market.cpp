@@ -119,8 +119,8 @@ std::vector<ComponentNode> read_nodes_csv(const std::string& path) {
 
 } // namespace
 
-Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path,
-                                                         bool positive_diagonal) {
+Eigen::SparseMatrix<double>
+read_symmetric_matrix_market(const std::string& path, bool positive_diagonal, long expected_rows) {
   const std::string text = read_whole_file(path);
   size_t offset = 0;
   std::string_view line;
@@ -151,6 +151,26 @@ Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path
     break;
   }
   if (rows == 0) throw ImportError(path + ": no size line");
+  // The declared size and count are only words of the file: they are
+  // checked against what the folder and the file hold before anything is
+  // sized by them (a size line of 2e9 rows once allocated 23 GB).
+  if (expected_rows >= 0 && rows != expected_rows)
+    throw ImportError(path + ": " + std::to_string(rows) + " rows, but dofs.csv lists " +
+                      std::to_string(expected_rows) + " dofs");
+  // 64-bit: rows <= 2e9, so rows (rows + 1) < 4.1e18 < 2^63.
+  const long most = symmetric ? rows * (rows + 1) / 2 : rows * rows;
+  if (entries > most)
+    fail(path, number,
+         "the size line announces " + std::to_string(entries) + " entries, more than the " +
+             std::to_string(most) + " a " + (symmetric ? "symmetric (lower triangle) " : "") +
+             std::to_string(rows) + " x " + std::to_string(rows) + " matrix holds");
+  long present = 0;
+  for (size_t at = offset; next_line(text, at, line);)
+    if (line.find_first_not_of(" \t\r") != std::string_view::npos) ++present;
+  if (present != entries)
+    throw ImportError(path + ": the size line announces " + std::to_string(entries) +
+                      " entries, the file holds " + std::to_string(present) +
+                      (present < entries ? " (truncated?)" : ""));
   const int n = static_cast<int>(rows);
   const CoordinateEntries e = parse_coordinate_entries(text, offset, number + 1, n, path);
   if (static_cast<long>(e.size()) != entries)
@@ -163,7 +183,10 @@ Eigen::SparseMatrix<double> read_symmetric_matrix_market(const std::string& path
         fail(path, e.line[k],
              "a symmetric Matrix Market file stores the lower triangle (row >= col)");
   if (positive_diagonal) check_positive_diagonal(e, n, path);
-  return symmetric_matrix(e, n, path);
+  // A general file is a whole matrix: an entry without its mirror stands
+  // beside a zero, and the pair is checked like any other.
+  return symmetric_matrix(e, n, path,
+                          symmetric ? MirrorRule::one_triangle : MirrorRule::both_triangles);
 }
 
 Component read_matrix_market_component(const std::string& folder, const std::string& name,
@@ -171,8 +194,8 @@ Component read_matrix_market_component(const std::string& folder, const std::str
   Component c;
   c.name = name;
   c.dofs = read_dofs_csv(folder + "/dofs.csv");
-  c.stiffness = read_symmetric_matrix_market(folder + "/K.mtx", false);
-  c.mass = read_symmetric_matrix_market(folder + "/M.mtx", true);
+  c.stiffness = read_symmetric_matrix_market(folder + "/K.mtx", false, c.n_dofs());
+  c.mass = read_symmetric_matrix_market(folder + "/M.mtx", true, c.n_dofs());
   for (const auto& [matrix, file] : {std::pair{&c.stiffness, "K.mtx"}, {&c.mass, "M.mtx"}})
     if (matrix->rows() != c.n_dofs())
       throw ImportError(folder + "/" + file + ": " + std::to_string(matrix->rows()) +

@@ -32,9 +32,10 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
                                    const ComponentReferenceOptions& options,
                                    const ComponentRowSink& sink) {
   const std::string where = "run_component_reference: ";
-  if (options.steps < 1)
+  if (options.steps < 1 || options.steps > std::numeric_limits<int>::max())
     throw std::invalid_argument(where + "steps = " + std::to_string(options.steps) +
-                                ", allowed >= 1");
+                                ", allowed [1, " + std::to_string(std::numeric_limits<int>::max()) +
+                                "]");
   if (options.output_every < 1 || options.energy_every < 1)
     throw std::invalid_argument(where + "output_every and energy_every must be >= 1");
   if (!(options.balance_tolerance > 0.0 && options.balance_tolerance < 1.0))
@@ -46,7 +47,7 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
   RunSummary s;
   s.method = "full";
   s.n_dofs = static_cast<int>(stiffness.rows());
-  s.steps_requested = options.steps;
+  s.steps_requested = static_cast<int>(options.steps);
   check_time_step(options.dt,
                   options.omega_max > 0.0 ? options.omega_max
                                           : max_angular_frequency(stiffness, mass),
@@ -71,7 +72,7 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
   s.completed = true;
   bool any_contact = false;
   const auto integration_start = std::chrono::steady_clock::now();
-  for (int n = 1; n <= options.steps; ++n) {
+  for (std::int64_t n = 1; n <= options.steps; ++n) {
     if (n % 1000 == 0) {
       if (options.checkpoint) options.checkpoint();
       if (options.progress) options.progress(static_cast<double>(n) / options.steps);
@@ -84,7 +85,7 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
       s.status = e.what();
       break;
     }
-    s.steps = n;
+    s.steps = static_cast<int>(n);
     const int runaway = runaway_contact(cd, law);
     if (runaway >= 0) {
       std::ostringstream m;
@@ -100,7 +101,7 @@ RunSummary run_component_reference(const Eigen::SparseMatrix<double>& stiffness,
     if (r.n_active > 0) {
       s.max_penetration = std::max(s.max_penetration, r.max_penetration);
       s.min_lambda = any_contact ? std::min(s.min_lambda, r.min_lambda) : r.min_lambda;
-      if (!any_contact) s.first_contact_step = n;
+      if (!any_contact) s.first_contact_step = static_cast<int>(n);
       any_contact = true;
     }
     s.max_lambda = std::max(s.max_lambda, cd.lambda().maxCoeff());

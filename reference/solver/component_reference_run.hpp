@@ -19,6 +19,7 @@
 // small-displacement model (a blow-up the balance may not see: an unstable
 // run's energy grows with the moving casing's work and the balance closes).
 
+#include <cstdint>
 #include <functional>
 
 #include <Eigen/SparseCore>
@@ -31,9 +32,11 @@ namespace rsi {
 
 struct ComponentReferenceOptions {
   double dt = 0.0;           ///< time step [s], > 0, below 2/omega_max unless force
-  int steps = 0;             ///< >= 1
-  int output_every = 1;      ///< >= 1: a row at t = 0 and every output_every steps
-  int energy_every = 1;      ///< >= 1: the balance check's period (rows between carry E = NaN)
+  /// 1 .. 2147483647 (what RunSummary counts); 64-bit so that a count
+  /// derived from a case is checked before it wraps.
+  std::int64_t steps = 0;
+  std::int64_t output_every = 1; ///< >= 1: a row at t = 0 and every output_every steps
+  std::int64_t energy_every = 1; ///< >= 1: the balance check's period (rows between carry E = NaN)
   RayleighDamping damping;   ///< alpha, beta >= 0
   double balance_tolerance = 1e-8; ///< relative, in (0, 1)
   double omega_max = 0.0;    ///< of (K, M) if known [rad/s]; 0: computed (Lanczos)
