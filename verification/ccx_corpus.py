@@ -45,10 +45,12 @@ Tolerance on eigenvalue j (relative, |lambda_rsi - lambda_ccx| / lambda_ccx):
 Eigenvalues near zero (rigid-body modes) are compared in absolute terms,
 against the same tolerance times the largest eigenvalue compared.
 
-Usage: ccx_corpus.py RSI DATA_FILE WORK_DIR CCX_CACHE [--small] [--survey DECK...]
+Usage: ccx_corpus.py RSI DATA_FILE WORK_DIR CCX_CACHE [--small] [--survey SPEC...]
   --small   only the rows marked small (the sanitizer build)
-  --survey  print the observed outcome of the named decks (or variants
-            DECK:FROM>TO) in the data file's format, compare nothing.
+  --survey  print the observed outcome of each SPEC, DECK[:VARIANT]@N/NODE
+            (N modes, boundary NODE), as a draft row of the data file
+            (the outcome and message in place of expected and fragment),
+            compare nothing: how the data file was made.
 Exits 77 (skipped) when calculix-ccx-test or ccx is absent.
 """
 

@@ -406,12 +406,14 @@ deck_variant node-zero '*NODE, NSET=NALL\n1, 0., 0., 0.\n0, 1., 0., 0.\n'
 deck_variant long-coordinate '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, -1.23456789012345E+02, 0., 0.\n'
 deck_variant empty-field '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\n1,,2\n'
 deck_variant include '*INCLUDE, INPUT=nowhere/mesh.inp\n'
+deck_variant dropped '*NODE, NSET=NALL\n1, 0., 0., 0.\n2, 1., 0., 0.\n*NSET, NSET=TIP\n2, 3\n'
 expect 2 "key 'component.boundary': boundary node 2147483600 is not a node of the deck $work/ccx/generate.inp" -- timeout 60 "$rsi" modes "$work/deck-generate.json" --out "$work/out"
 expect 2 "ccx/forward.inp:5: *NSET TIP names the node set END before it is defined ($work/ccx/forward.inp:6): ccx reads that name as an empty set" -- "$rsi" modes "$work/deck-forward.json" --out "$work/out"
 expect 2 "ccx/node-zero.inp:3: *NODE: node id 0" -- "$rsi" modes "$work/deck-node-zero.json" --out "$work/out"
 expect 2 "ccx/long-coordinate.inp:3: *NODE: a coordinate '-1.23456789012345E+02' has more than 20 characters: ccx reads only its first 20 ('-1.23456789012345E+0')" -- "$rsi" modes "$work/deck-long-coordinate.json" --out "$work/out"
 expect 2 "ccx/empty-field.inp:5: *NSET: an empty field between two commas" -- "$rsi" modes "$work/deck-empty-field.json" --out "$work/out"
 expect 2 "ccx/include.inp:1: *INCLUDE: the file '$work/ccx/nowhere/mesh.inp' does not exist" -- "$rsi" modes "$work/deck-include.json" --out "$work/out"
+expect 2 "key 'component.boundary.node_set': the *NSET TIP of $work/ccx/dropped.inp lists node 3, above the deck's largest node id 2: ccx drops it" -- "$rsi" modes "$work/deck-dropped.json" --out "$work/out"
 
 # Rubbing runs of a component case (issue 12): every key of "rubbing" named.
 rubbing_variant() { # NAME RUBBING_JSON [COMPONENT_EXTRA]

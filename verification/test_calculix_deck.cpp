@@ -154,6 +154,8 @@ TEST(CalculixDeck, NodeSetsAsCcxBuildsThem) {
       << "trailing commas";
   EXPECT_EQ(set_of("*NSET, NSET=X\n5, 25\n"), (std::vector<int>{5}))
       << "an id above the largest node id (20) is dropped";
+  EXPECT_EQ(read(kNodes + "*NSET, NSET=X\n5, 25\n").dropped_ids.at("X"), (std::vector<int>{25}))
+      << "and kept aside: a boundary set losing it is refused";
   EXPECT_EQ(set_of("*NSET, NSET=X\n5, 15\n"), (std::vector<int>{5, 15}))
       << "an undefined id below it is kept";
   EXPECT_EQ(set_of("*NSET, NSET=A\n5, 6\n*NSET, NSET=X\nA, 7\n"), (std::vector<int>{5, 6, 7}));

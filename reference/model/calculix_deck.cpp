@@ -223,7 +223,8 @@ std::map<std::string, Where> later_sets(const std::vector<Line>& lines) {
 
 void read_nset_block(const std::vector<Line>& lines, size_t& k, int largest,
                      const std::map<std::string, Where>& definitions,
-                     std::map<std::string, std::vector<int>>& nsets) {
+                     std::map<std::string, std::vector<int>>& nsets,
+                     std::map<std::string, std::vector<int>>& dropped) {
   const Line& head = lines[k];
   const std::vector<std::string> key = fields_of(head, "*NSET");
   const std::string name = set_name(parameter(key, "NSET"), head, "*NSET");
@@ -272,7 +273,8 @@ void read_nset_block(const std::vector<Line>& lines, size_t& k, int largest,
         if (id < 1)
           fail(line.where, "*NSET: node id " + std::to_string(id) +
                                " (ids are integers in [1, 2147483647])");
-        if (id <= largest) set.push_back(static_cast<int>(id)); // ccx drops ids above nk
+        if (id <= largest) set.push_back(static_cast<int>(id));
+        else dropped[name].push_back(static_cast<int>(id)); // ccx drops ids above nk
         continue;
       }
       if (f[i].size() > 80)
@@ -337,7 +339,7 @@ CalculixDeck read_calculix_deck(const std::string& path) {
       std::map<std::string, Where> later;
       for (const auto& [name, where] : definitions)
         if (!deck.nsets.count(name)) later.insert({name, where});
-      read_nset_block(lines, k, deck.largest_node_id, later, deck.nsets);
+      read_nset_block(lines, k, deck.largest_node_id, later, deck.nsets, deck.dropped_ids);
     } else {
       ++k;
     }

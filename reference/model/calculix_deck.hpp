@@ -20,8 +20,8 @@
 //     so *NODE, NSET=X fills X first. *NSET, NSET=X lists node ids and
 //     names of node sets defined before it (their nodes, in order; X
 //     itself adds nothing), a trailing comma allowed; an id above the
-//     largest node id is dropped (ccx warns and drops it). *NSET X again
-//     appends. GENERATE: "first, last[, step]", first in [1, the largest
+//     largest node id is dropped (ccx warns and drops it; kept in
+//     dropped_ids). *NSET X again appends. GENERATE: "first, last[, step]", first in [1, the largest
 //     node id], last at least first and clamped to the largest node id,
 //     step >= 1, in 64-bit arithmetic; ids need not be defined nodes.
 //   - refused (ImportError naming file, line and keyword; ccx crashes or
@@ -58,6 +58,10 @@ struct CalculixDeck {
   std::vector<ComponentNode> nodes;              ///< ascending id
   int largest_node_id = 0;                       ///< ccx's nk: the largest id of a *NODE line
   std::map<std::string, std::vector<int>> nsets; ///< upper-case name -> node ids, in order
+  /// Per set, the ids its *NSET lines list above the largest node id,
+  /// which ccx drops (with a warning) and so does `nsets`: a boundary set
+  /// holding one is refused (component_case.hpp), not silently shortened.
+  std::map<std::string, std::vector<int>> dropped_ids;
   std::vector<DeckKeyword> keywords;             ///< each keyword once, first appearance first
   std::vector<DeckKeyword> element_types;        ///< each *ELEMENT TYPE= once (name = the type)
 };

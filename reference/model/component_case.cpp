@@ -481,6 +481,15 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
         throw ImportError(c.case_path + ": key 'component.boundary.node_set': the deck " + source +
                           " has no *NSET named " + c.boundary_node_set);
       boundary = set->second;
+      const auto dropped = deck.dropped_ids.find(c.boundary_node_set);
+      if (dropped != deck.dropped_ids.end())
+        throw ImportError(c.case_path + ": key 'component.boundary.node_set': the *NSET " +
+                          c.boundary_node_set + " of " + source + " lists node " +
+                          std::to_string(dropped->second.front()) +
+                          ", above the deck's largest node id " +
+                          std::to_string(deck.largest_node_id) +
+                          ": ccx drops it (with a warning), so the set would lose it; define the "
+                          "node or remove it from the set");
     }
     for (int id : boundary)
       if (!std::binary_search(deck.nodes.begin(), deck.nodes.end(), id,
