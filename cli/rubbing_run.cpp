@@ -41,7 +41,7 @@ std::string count_text(double x) {
 /// k of the header (samples at T/N, integration at T/(k N) <= safety x
 /// critical) and the run's step count, checked against max_rubbing_steps
 /// in floating point before any integer holds them: CaseError naming the
-/// keys. `method` and `limit` say which model's stability limit set k.
+/// keys. `method` and `critical_dt` say which model's stability limit set k.
 RunCounts checked_counts(const RubbingModel& model, const RubbingRunOptions& options,
                          std::int64_t samples, double sample_dt, double critical_dt,
                          const std::string& method) {
