@@ -22,8 +22,9 @@ std::string square_size(int n) {
 }
 
 const char* const stiffness_remedy =
-    "the residual flexibility K^-1 - Phi_1 Omega_1^-1 Phi_1^T needs a supported part (is the "
-    "hub clamped?)";
+    "the residual flexibility K^-1 - Phi_1 Omega_1^-1 Phi_1^T needs K invertible, a supported "
+    "part (is the hub clamped?); a free part takes cb or guyan, whose constraint modes need only "
+    "K_II positive definite (the boundary holding the part)";
 
 } // namespace
 
@@ -39,7 +40,11 @@ FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffne
   // subtraction would cancel R_B down to its round-off floor (Bladh et al.
   // 2003): R is then summed over the discarded modes instead, Phi_2
   // Omega_2^-1 Phi_2B^T, the same R without cancellation.
-  if (few_modes(count, n) == ModalSolver::dense) {
+  // The tail sum needs every mode, n finite ones: M positive definite. A
+  // singular M (massless dofs: consistent masses of C3D20R, C3D10, ...) has
+  // fewer, and its massless directions carry static flexibility that no
+  // mode holds; R is then K^-1 E_B minus the kept modes, below.
+  if (few_modes(count, n) == ModalSolver::dense && positive_definite_mass(mass)) {
     pool.complete = true;
     pool.modes = lowest_modes(stiffness, mass, n, ModalSolver::dense);
     // The tail sum needs no K^-1, but it is R only for a nonsingular K, and
@@ -78,7 +83,8 @@ FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffne
     pool.modes = lowest_modes(stiffness, mass, count, *factor);
   } else {
     pool.flexibility = solve_positive_definite(stiffness, unit, k_name, stiffness_remedy);
-    if (count > 0) pool.modes = lowest_modes(stiffness, mass, count, ModalSolver::sparse);
+    // Many modes of a singular M: the dense (shift-invert) solver.
+    if (count > 0) pool.modes = lowest_modes(stiffness, mass, count, few_modes(count, n));
   }
   return pool;
 }

@@ -27,7 +27,13 @@
 // Ritz vectors are computed (one product K Phi), with lambda their Rayleigh
 // quotients phi^T K phi / phi^T M phi. A mode has converged when its
 // residual is below tolerance + eps ||K||_1 |phi| / |K phi|, the second term
-// being the rounding level of K phi itself: for the lowest modes of a stiff
+// being the rounding level of K phi itself (about a shift sigma != 0 the
+// residual is relative to |K phi| + |lambda| |M phi|, its floor eps
+// (||K||_1 + |lambda| ||M||_1) |phi| over the same, as solver/modal_check
+// measures it, and a rigid-body mode, whose energy phi^T K phi is not
+// resolved, converges on its Ritz estimate: its K phi is what is left of
+// the other modes in it, and its true residual stays of order one): for
+// the lowest modes of a stiff
 // model it is the larger one (Rotor 37's first mode: 1.4e-7, its residual
 // stalls at 1.4e-8). The true residual runs 5 to 1000 times the estimate
 // (the next block holds stiffer directions), so a mode that fails is
@@ -45,8 +51,12 @@
 // wanted). K must be symmetric positive definite (a supported part; a
 // failed factorization, or a lowest mode whose energy the factor does not
 // resolve, as in reduced/bases/guyan, is the status
-// stiffness_not_positive_definite),
-// M symmetric positive semi-definite; both in full (symmetric) storage.
+// stiffness_not_positive_definite), or, with a shift sigma < 0
+// (options.shift: T = (K - sigma M)^-1 M, theta = 1 / (lambda - sigma)),
+// positive semi-definite with K - sigma M positive definite (a free part:
+// its rigid-body modes are the eigenvalues 0); M symmetric positive
+// semi-definite; both in full (symmetric) storage. The eigenvalues are the
+// Rayleigh quotients phi^T K phi / phi^T M phi, whatever the shift.
 //
 // Parameters (BlockShiftInvertOptions): the block size b trades the solve's
 // speed a vector (BLAS-3 grows with b) against the Krylov degree per solve
@@ -86,6 +96,10 @@ struct BlockShiftInvertOptions {
   double tolerance = 1e-9;
   /// Of the random first block.
   std::uint64_t seed = 20261123;
+  /// sigma: the operator is (K - sigma M)^-1 M, K - sigma M positive definite
+  /// (0 for a supported part, below 0 for a free one, whose K is singular);
+  /// not used when a factor is given (its own shift is).
+  double shift = 0.0;
   CholmodFactor::Method factorization = CholmodFactor::Method::supernodal;
 };
 
@@ -101,8 +115,8 @@ struct BlockShiftInvertResult {
   std::string message;             ///< why not successful
   Eigen::VectorXd eigenvalues;     ///< count lambda, ascending
   Eigen::MatrixXd eigenvectors;    ///< n x count, M-orthonormal
-  Eigen::VectorXd residuals;       ///< |K phi - lambda M phi| / |K phi| of each
-  Eigen::VectorXd residual_floors; ///< sqrt(p) eps | |K| |phi| | / |K phi|: its rounding level
+  Eigen::VectorXd residuals;       ///< |K phi - lambda M phi| / |K phi| of each (sigma != 0: header)
+  Eigen::VectorXd residual_floors; ///< eps ||K||_1 |phi| / |K phi|: its rounding level (the same)
   long n_solves = 0;               ///< right-hand sides solved (a block of b counts b)
   int n_block_solves = 0;          ///< block solves
   int n_restarts = 0;
@@ -119,10 +133,11 @@ struct BlockShiftInvertResult {
 class CholmodShiftInvert;
 
 /// The `count` lowest eigenpairs (1 <= count; the basis must fit: max_basis + b <= n).
-/// `factorized`, if given, is a successful factor of this K at shift 0,
-/// used instead of factorizing K again (a caller that needs K^-1 for more
-/// than the modes factorizes once); its size and shift are checked
-/// (std::invalid_argument), and options.factorization is then not used.
+/// `factorized`, if given, is a successful factor of this K - sigma M at its
+/// shift sigma (0: of K), used instead of factorizing again (a caller that
+/// needs K^-1 for more than the modes factorizes once); its size is checked
+/// (std::invalid_argument), and options.factorization and options.shift are
+/// then not used.
 BlockShiftInvertResult block_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
                                           const Eigen::SparseMatrix<double>& mass, int count,
                                           const BlockShiftInvertOptions& options = {},
