@@ -14,12 +14,13 @@ data file records:
   agree          rsi exits 0 and every eigenvalue lies within the tolerance
                  below of ccx's;
   refuse         rsi exits 2 and its message holds the recorded fragment;
-  pending-eigen  a model rsi's eigensolvers do not take yet (a singular
-                 consistent mass, a free model: exit 3, or 2 for modes
-                 they cannot resolve) or take inaccurately ("disagree"):
-                 the outcome and message hold the recorded fragment, so
-                 that when they change the row fails until it is set to
-                 agree.
+  exact          ccx's own Lanczos is wrong on the deck (a missed or a
+                 spurious eigenvalue: ARPACK on a singular M); rsi exits 0
+                 and agrees with an exact dense solve of the matrices ccx
+                 stored (the row's fragment, verification/
+                 ccx_exact_eigenvalues.m) within exact_tolerances();
+  exit3          rsi reports a numerical failure (exit 3) whose message
+                 holds the recorded fragment.
 
 Tolerance on eigenvalue j (relative, |lambda_rsi - lambda_ccx| / lambda_ccx):
   5e-7           ccx prints eigenvalues with 7 significant digits
@@ -63,11 +64,17 @@ import re
 import shutil
 import subprocess
 import sys
+from collections import namedtuple
 
 DECKS = '/usr/share/doc/calculix-ccx-test/examples/test'
 PRINT_DIGITS = 5e-7
 ARPACK_TOL = 1e-2
 CLUSTER = 1e-6
+EXACT_PRINT = 5e-13
+
+# One eigenvalue of `rsi modes` (modes.csv): lambda = (2 pi f)^2, the square
+# of its uncertainty_hz on a rigid-body mode (f = 0 +- u), and rigid_body.
+Eigenvalue = namedtuple('Eigenvalue', 'value uncertainty rigid')
 
 # Element types and their node counts, for the variants that turn a deck's
 # quadratic elements into linear ones (first nodes = corner nodes).
@@ -277,10 +284,14 @@ def rsi_eigenvalues(rsi, work, deck, text, files, boundary, modes, cache):
     values = []
     if run.returncode == 0:
         with open(os.path.join(folder, 'out', 'modes.csv')) as f:
-            next(f)
+            header = next(f).strip().split(',')
+            hz_at, u_at, rigid_at = (header.index(k) for k in
+                                     ('frequency_hz', 'uncertainty_hz', 'rigid_body'))
             for line in f:
-                hz = float(line.split(',')[1])
-                values.append((2.0 * math.pi * hz) ** 2)
+                fields = line.strip().split(',')
+                values.append(Eigenvalue((2.0 * math.pi * float(fields[hz_at])) ** 2,
+                                         (2.0 * math.pi * float(fields[u_at])) ** 2,
+                                         fields[rigid_at] == '1'))
     return run.returncode, run.stderr.strip(), values
 
 
@@ -300,24 +311,49 @@ def tolerances(reference, spectrum, rounding):
     return out
 
 
-def compare(reference, computed, rounding):
-    """(worst ratio error/tolerance, worst relative error, detail) over the reference modes."""
+def compare(reference, computed, tol):
+    """(worst ratio error/tolerance, worst relative error, detail) over the reference modes.
+
+    tol[j] is relative; eigenvalues near zero are compared against tol[j] times the largest
+    reference eigenvalue; a mode rsi reports as rigid (zero within its uncertainty u_j,
+    modes.csv) agrees when |reference_j| <= u_j + tol[j] * scale: rsi claims no more."""
     n = len(reference)
-    if len(computed) < n + 1:
-        return math.inf, math.inf, 'rsi gave %d eigenvalues, %d needed' % (len(computed), n + 1)
     scale = max(abs(v) for v in reference)
-    tol = tolerances(reference, computed, rounding)
     worst, worst_rel, where = 0.0, 0.0, ''
     for j in range(n):
-        err = abs(computed[j] - reference[j])
-        small = abs(reference[j]) <= 1e-6 * scale
-        rel = err / max(scale, 1e-300) if small else err / abs(reference[j])
-        ratio = rel / tol[j]
+        lam = computed[j]
+        if lam.rigid:
+            err = abs(reference[j])
+            rel = err / max(scale, 1e-300)
+            ratio = err / (lam.uncertainty + tol[j] * scale)
+            text = 'rsi rigid (0 +- %.3g)' % lam.uncertainty
+        else:
+            err = abs(lam.value - reference[j])
+            small = abs(reference[j]) <= 1e-6 * scale
+            rel = err / max(scale, 1e-300) if small else err / abs(reference[j])
+            ratio = rel / tol[j]
+            text = 'rsi %.9g' % lam.value
         worst_rel = max(worst_rel, rel)
-        if ratio > worst:
-            worst, where = ratio, 'mode %d: rsi %.9g ccx %.7g rel %.2e tol %.2e' % (
-                j + 1, computed[j], reference[j], rel, tol[j])
+        if ratio > worst or not where:
+            worst, where = ratio, 'mode %d: %s ccx %.7g rel %.2e tol %.2e' % (
+                j + 1, text, reference[j], rel, tol[j])
     return worst, worst_rel, where
+
+
+def exact_reference(fragment):
+    """An `exact` row's fragment, 'n=DOFS LAMBDA...': (dofs, eigenvalues)."""
+    fields = fragment.split()
+    return int(fields[0][2:]), [float(v) for v in fields[1:]]
+
+
+def exact_tolerances(dofs, count, rounding):
+    """rsi and the exact solve (Octave eig, verification/ccx_exact_eigenvalues.m) solve the same
+    stored matrices, so the input's rounding is common to both; each solver is backward stable
+    (LAPACK Users' Guide, 3rd ed., 4.7), to a relative perturbation of the entries of at most
+    max(5e-14, n eps), and the rounding column is the first-order effect of 5e-14 on the
+    eigenvalues: two solvers, 2 rounding max(1, n eps / 5e-14), plus the printed 13 digits."""
+    eps = 2.0 ** -52
+    return [EXACT_PRINT + 2.0 * rounding * max(1.0, dofs * eps / 5e-14)] * count
 
 
 def read_rows(path):
@@ -330,7 +366,7 @@ def read_rows(path):
             if len(fields) != 10:
                 sys.exit('%s:%d: expected 10 tab-separated fields, got %d' % (path, number, len(fields)))
             deck, variant, modes, boundary, types, feats, small, expected, fragment, rounding = fields
-            if expected == 'agree' and rounding == '-':
+            if expected in ('agree', 'exact') and rounding == '-':
                 sys.exit('%s:%d: an agree row needs its rounding bound' % (path, number))
             rows.append(dict(deck=deck, variant=variant, modes=int(modes),
                              boundary=[int(b) for b in boundary.split(',')], types=types,
@@ -347,11 +383,21 @@ def run_row(rsi, work, cache, row):
     status, stderr, computed = rsi_eigenvalues(rsi, work, name, text, files, row['boundary'],
                                                row['modes'] + 1, cache)
     if status == 0:
-        reference, why = ccx_eigenvalues(text, files, cache, re.sub(r'[^A-Za-z0-9]', '-', name))
-        if reference is None:
-            return 'ccx-fails', why, types, feats, None
-        reference = reference[:row['modes']]
-        worst, rel, where = compare(reference, computed, row.get('rounding', 0.0))
+        if len(computed) < row['modes'] + 1:
+            return 'disagree', 'rsi gave %d eigenvalues, %d asked' % (
+                len(computed), row['modes'] + 1), types, feats, None
+        values = [lam.value for lam in computed]
+        if row.get('expected') == 'exact':
+            dofs, reference = exact_reference(row['fragment'])
+            tol = exact_tolerances(dofs, len(reference), row['rounding'])
+        else:
+            reference, why = ccx_eigenvalues(text, files, cache,
+                                              re.sub(r'[^A-Za-z0-9]', '-', name))
+            if reference is None:
+                return 'ccx-fails', why, types, feats, None
+            reference = reference[:row['modes']]
+            tol = tolerances(reference, values, row.get('rounding', 0.0))
+        worst, rel, where = compare(reference, computed, tol)
         return ('agree' if worst <= 1.0 else 'disagree'), where, types, feats, rel
     kind = {2: 'refuse', 3: 'exit3'}.get(status, 'exit%d' % status)
     return kind, stderr, types, feats, None
@@ -407,9 +453,10 @@ def main():
             ok = ok and status == 'agree'
         elif expected == 'refuse':
             ok = ok and status == 'refuse' and row['fragment'] in detail
-        elif expected == 'pending-eigen':
-            ok = (ok and status in ('exit3', 'refuse', 'disagree') and
-                  row['fragment'] in status + ': ' + detail)
+        elif expected == 'exact':
+            ok = ok and status == 'agree'
+        elif expected == 'exit3':
+            ok = ok and status == 'exit3' and row['fragment'] in detail
         else:
             ok, why = False, 'unknown expected outcome %r' % expected
         counts[expected] = counts.get(expected, 0) + 1

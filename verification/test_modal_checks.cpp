@@ -202,6 +202,34 @@ TEST(ModalChecks, MasslessDofsOnTheDensePath) {
   EXPECT_TRUE(all_finite.accuracy.passed) << all_finite.accuracy.failure;
 }
 
+TEST(ModalChecks, SharedNullDirectionWhoseCholeskySucceeds) {
+  // K = diag(1e-16, 1, 2, 3) / 3, M = diag(-1e-17, 1, 1, 1) / 3 (entries of
+  // 16-17 digits, as assembled: stored_digits): the first direction
+  // carries neither stiffness nor mass beyond rounding (a C3D20R zero-energy
+  // mode as ccx writes it: CalculiX's inistrain test deck), yet K - sigma M
+  // factors, and its mu = -1e-17 / 1e-16 looked like an indefinite M (exit 3
+  // "the mass matrix is not positive definite, nor semi-definite"). Exact: the
+  // pencil on the other directions, lambda = 1, 2, 3 (to the rounding of the
+  // quotients of the stored thirds: a few eps).
+  Eigen::SparseMatrix<double> k(4, 4);
+  Eigen::SparseMatrix<double> m(4, 4);
+  const double stiffness[] = {1e-16 / 3.0, 1.0 / 3.0, 2.0 / 3.0, 1.0};
+  const double mass[] = {-1e-17 / 3.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};
+  for (int i = 0; i < 4; ++i) {
+    k.insert(i, i) = stiffness[i];
+    m.insert(i, i) = mass[i];
+  }
+  const Modes modes = lowest_modes(k, m, 3);
+  ASSERT_TRUE(modes.accuracy.passed) << modes.accuracy.failure;
+  for (int i = 0; i < 3; ++i) {
+    // Exact eigenvalue i + 1; the dense solvers' bound n eps lambda_max (4 eps 3), doubled.
+    std::printf("shared null direction: lambda_%d = %.17g (exact %d)\n", i + 1,
+                modes.omega_squared(i), i + 1);
+    EXPECT_NEAR(modes.omega_squared(i), i + 1.0, 2.0 * 4.0 * 3.0 * 2.22e-16);
+  }
+  EXPECT_EQ(modes.accuracy.null_directions.cols(), 1);
+}
+
 TEST(ModalChecks, MasslessDofsOnTheSparsePathInMillimetres) {
   // 2,744 dofs (the sparse path: Spectra's Lanczos on SparseLU), 549
   // massless, in the units of a CalculiX model (N, mm, t, s: steel's E =

@@ -95,13 +95,18 @@ double shift_for(const Eigen::SparseMatrix<double>& stiffness,
 /// eigenvalue there, only 0/0: those directions are the eigenvectors of A
 /// with eigenvalues within n eps' of zero (LAPACKE dsyevd); they are left
 /// out (modes.accuracy.null_directions) and the pencil solved on the rest,
-/// where A is positive definite.
+/// where A is positive definite. Such a direction can also let the
+/// Cholesky factor of A succeed (its eigenvalue a rounding error above
+/// zero) and then shows as a mu far below -n eps' mu_max (M's rounding
+/// over A's): the same split is tried before M is called indefinite, and
+/// taken when the null directions of A carry no mass (z^T M z within
+/// n eps' |M|_1).
 Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
                          const Eigen::SparseMatrix<double>& mass, int count, double sigma) {
   const int n = static_cast<int>(stiffness.rows());
   const double input = digits_rounding(std::min(stored_digits(mass), stored_digits(stiffness)));
-  const double resolution = static_cast<double>(n) *
-                            std::max(std::numeric_limits<double>::epsilon(), input);
+  const double resolution =
+      static_cast<double>(n) * std::max(std::numeric_limits<double>::epsilon(), input);
   const Eigen::MatrixXd m_full = Eigen::MatrixXd(mass);
   const Eigen::MatrixXd a_full = Eigen::MatrixXd(stiffness) - sigma * m_full;
   Eigen::MatrixXd x = m_full; // the eigenvectors, A-normalised
@@ -115,12 +120,14 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
     throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")" +
                      kSolverRemedy);
   Eigen::MatrixXd null_directions;
-  if (info > n) { // A not positive definite: shared null directions, or K indefinite
+  const bool failed_cholesky =
+      info > n; // A not positive definite: shared null directions, or K indefinite
+  const bool negative_mu = info == 0 && mu(0) < -resolution * std::abs(mu(n - 1));
+  if (failed_cholesky || negative_mu) {
     Eigen::MatrixXd v = a_full;
     Eigen::VectorXd w(n);
     const lapack_int e = LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n, v.data(), n, w.data());
-    if (e == LAPACK_WORK_MEMORY_ERROR || e == LAPACK_TRANSPOSE_MEMORY_ERROR)
-      throw std::bad_alloc();
+    if (e == LAPACK_WORK_MEMORY_ERROR || e == LAPACK_TRANSPOSE_MEMORY_ERROR) throw std::bad_alloc();
     if (e != 0)
       throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(e) + ")" +
                        kSolverRemedy);
@@ -128,25 +135,34 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
     int z = 0;
     while (z < n && w(z) <= tolerance)
       ++z;
-    if (w(0) < -tolerance || z == 0 || z == n) {
+    const double mass_floor = resolution * m_full.cwiseAbs().colwise().sum().maxCoeff();
+    bool massless = z > 0 && z < n;
+    for (int i = 0; i < z && massless; ++i)
+      massless = v.col(i).dot(m_full * v.col(i)) <= mass_floor;
+    if (failed_cholesky && (w(0) < -tolerance || z == 0 || z == n)) {
       std::ostringstream message;
       message << "modal analysis: K - sigma M is not positive definite at sigma = " << sigma
               << " (its lowest eigenvalue " << w(0) << ", resolution " << tolerance
               << "): the stiffness matrix is not positive semi-definite" << kStiffnessRemedy;
       throw ModalError(message.str());
     }
-    null_directions = v.leftCols(z);
-    // On the rest, A = diag(w): C = W^-1/2 Q^T M Q W^-1/2, x = Q W^-1/2 y.
-    const Eigen::MatrixXd q = v.rightCols(n - z) * w.tail(n - z).cwiseSqrt().cwiseInverse().asDiagonal();
-    Eigen::MatrixXd c = q.transpose() * m_full * q;
-    c = 0.5 * (c + c.transpose()).eval();
-    mu.resize(n - z);
-    const lapack_int f = LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n - z, c.data(), n - z, mu.data());
-    if (f == LAPACK_WORK_MEMORY_ERROR || f == LAPACK_TRANSPOSE_MEMORY_ERROR) throw std::bad_alloc();
-    if (f != 0)
-      throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(f) + ")" +
-                       kSolverRemedy);
-    x = q * c;
+    if (massless || failed_cholesky) {
+      null_directions = v.leftCols(z);
+      // On the rest, A = diag(w): C = W^-1/2 Q^T M Q W^-1/2, x = Q W^-1/2 y.
+      const Eigen::MatrixXd q =
+          v.rightCols(n - z) * w.tail(n - z).cwiseSqrt().cwiseInverse().asDiagonal();
+      Eigen::MatrixXd c = q.transpose() * m_full * q;
+      c = 0.5 * (c + c.transpose()).eval();
+      mu.resize(n - z);
+      const lapack_int f =
+          LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n - z, c.data(), n - z, mu.data());
+      if (f == LAPACK_WORK_MEMORY_ERROR || f == LAPACK_TRANSPOSE_MEMORY_ERROR)
+        throw std::bad_alloc();
+      if (f != 0)
+        throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(f) + ")" +
+                         kSolverRemedy);
+      x = q * c;
+    }
   }
   const int r = static_cast<int>(mu.size());
   // The resolution of mu: the solver's n eps mu_max, and the rounding of
@@ -430,8 +446,8 @@ bool lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& scaled_ma
 /// Lanczos on a CHOLMOD factor of K - sigma M: the caller's (`factorized`,
 /// of these K and M at shift 0) or its own.
 SparseOutcome cholmod_lanczos_modes(const Eigen::SparseMatrix<double>& stiffness,
-                                    const Eigen::SparseMatrix<double>& mass, int count, double sigma,
-                                    CholmodShiftInvert* factorized, Modes& modes,
+                                    const Eigen::SparseMatrix<double>& mass, int count,
+                                    double sigma, CholmodShiftInvert* factorized, Modes& modes,
                                     std::string& why) {
   const double scale = lanczos_mass_scale(stiffness, mass, sigma);
   const Eigen::SparseMatrix<double> scaled_mass = scale * mass;
@@ -634,8 +650,8 @@ Modes checked_sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
     modes = sparse_modes(stiffness, mass, count, factorized, false, sigma);
   } catch (const ShiftNotDefinite& e) {
     if (n > dense_fallback_limit) throw;
-    return checked_dense_shift_invert(stiffness, mass, count, std::string("the sparse path: ") +
-                                                                  e.what());
+    return checked_dense_shift_invert(stiffness, mass, count,
+                                      std::string("the sparse path: ") + e.what());
   }
   if (check_modes(stiffness, mass, sigma, modes)) return modes;
   std::string before = modes.accuracy.solver + ": " + modes.accuracy.failure;
@@ -644,8 +660,8 @@ Modes checked_sparse_modes(const Eigen::SparseMatrix<double>& stiffness,
     Modes block = sparse_modes(stiffness, mass, count, factorized, true, sigma);
     block.accuracy.replaced = before;
     if (check_modes(stiffness, mass, sigma, block)) return block;
-    before = block.accuracy.solver + ": " + block.accuracy.failure + " (and before it " + before +
-             ")";
+    before =
+        block.accuracy.solver + ": " + block.accuracy.failure + " (and before it " + before + ")";
     modes = block;
   }
   if (n <= dense_fallback_limit) return checked_dense_shift_invert(stiffness, mass, count, before);

@@ -321,7 +321,7 @@ bool check_modes(const Eigen::SparseMatrix<double>& stiffness,
 
 void require_passed(const Modes& modes, const std::string& what) {
   if (modes.accuracy.passed) return;
-  throw ModalCheckError("modal analysis: the " + what + " returned modes that fail their check: " +
+  throw ModalCheckError("modal analysis: " + what + " returned modes that fail their check: " +
                         modes.accuracy.failure +
                         "; ask for fewer modes (--count, --modes), or report the model");
 }
