@@ -230,6 +230,32 @@ TEST(ModalChecks, SharedNullDirectionWhoseCholeskySucceeds) {
   EXPECT_EQ(modes.accuracy.null_directions.cols(), 1);
 }
 
+TEST(ModalChecks, AllModesAboveTheDenseLimit) {
+  // 2,197 dofs, above dense_limit: all of them asked threw "the sparse
+  // solver needs count < 2197" (exit 1 in the CLI, whose --count allows n),
+  // and a count near n ran minutes of Lanczos; more than n/4 modes now go
+  // to the dense solver up to dense_many_modes_limit.
+  const Cube cube = laplacian_cube(13, false);
+  const int n = static_cast<int>(cube.k.rows());
+  ASSERT_GT(n, dense_limit);
+  const Modes modes = lowest_modes(cube.k, cube.m, n);
+  ASSERT_TRUE(modes.accuracy.passed) << modes.accuracy.failure;
+  const std::vector<double> exact = cube_eigenvalues(cube.kappa);
+  // The dense solver is backward stable: each eigenvalue within n eps lambda_max
+  // (LAPACK Users' Guide, 3rd ed., 4.10), doubled for the closed form's own rounding.
+  const double bound = 2.0 * n * std::numeric_limits<double>::epsilon() * exact.back();
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i)
+    worst = std::max(worst, std::abs(modes.omega_squared(i) - exact[static_cast<size_t>(i)]));
+  std::printf("all %d modes: max |lambda - exact| = %.3g, bound %.3g\n", n, worst, bound);
+  EXPECT_LE(worst, bound);
+  // Above dense_many_modes_limit all n modes are refused before any solve.
+  const Cube big = laplacian_cube(21, false);
+  const int n_big = static_cast<int>(big.k.rows());
+  ASSERT_GT(n_big, dense_many_modes_limit);
+  EXPECT_THROW(lowest_modes(big.k, big.m, n_big), ModalResolutionError);
+}
+
 TEST(ModalChecks, MasslessDofsOnTheSparsePathInMillimetres) {
   // 2,744 dofs (the sparse path: Spectra's Lanczos on SparseLU), 549
   // massless, in the units of a CalculiX model (N, mm, t, s: steel's E =

@@ -740,11 +740,15 @@ Modes lowest_modes(const Eigen::SparseMatrix<double>& stiffness,
   if (count < 1 || count > n)
     throw std::invalid_argument("lowest_modes: count must be in [1, " + std::to_string(n) +
                                 "], got " + std::to_string(count));
-  const bool dense =
-      solver == ModalSolver::dense || (solver == ModalSolver::automatic && n <= dense_limit);
+  const bool many_modes = count > n / 4 && n <= dense_many_modes_limit;
+  const bool dense = solver == ModalSolver::dense ||
+                     (solver == ModalSolver::automatic && (n <= dense_limit || many_modes));
   if (!dense && count >= n)
-    throw std::invalid_argument("lowest_modes: the sparse solver needs count < " +
-                                std::to_string(n));
+    throw ModalResolutionError(
+        "modal analysis: all " + std::to_string(n) +
+        " modes need the dense solver, which takes parts of at most " +
+        std::to_string(dense_many_modes_limit) + " dofs; ask for at most " +
+        std::to_string(n - 1) + " modes");
   if (!dense) return checked_sparse_modes(stiffness, mass, count, nullptr);
   Modes modes;
   if (!dense_direct(stiffness, mass, count, modes)) // M not positive definite

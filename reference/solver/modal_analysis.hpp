@@ -126,6 +126,14 @@ enum class ModalSolver {
 /// of K and M: 2 n^2 doubles, 64 MB at this size).
 constexpr int dense_limit = 2000;
 
+/// Above dense_limit, ModalSolver::automatic still solves densely when more
+/// than a quarter of the modes are asked, up to this size: Lanczos keeps a
+/// basis of about 2 count vectors and costs O(n count^2) a restart, the
+/// dense solver about 10 n^3 flops once (the 4,101-dof blade3d with 4,000
+/// modes: 7 min of Lanczos); dense storage, about 6 n^2 doubles, is 3 GB
+/// here. Above it, all n modes are refused (the sparse path needs count < n).
+constexpr int dense_many_modes_limit = 8000;
+
 /// omega_max [rad/s] alone, by Lanczos (Spectra, Cholesky mode on CHOLMOD's
 /// factor of M): cheap for any size, for the stability limit of explicit
 /// integration. ModalError if M is not positive definite.
