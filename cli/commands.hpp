@@ -11,6 +11,7 @@
 #include "case_file.hpp"
 #include "casing.hpp"
 #include "component_case.hpp"
+#include "failure_kinds.hpp"
 #include "history.hpp"
 #include "modal_analysis.hpp"
 
@@ -19,9 +20,9 @@ namespace rsi {
 class StagedOutput;
 
 /// A command-line value outside its allowed range.
-class UsageError : public std::invalid_argument {
+class UsageError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 struct ModesOptions {

@@ -430,29 +430,14 @@ int main(int argc, char** argv) {
       return status;
     } catch (const rsi::Interrupted& e) {
       return failure("error", e, e.exit_status());
-    } catch (const rsi::CaseError& e) {
-      return failure("error", e, 2);
-    } catch (const rsi::ImportError& e) {
-      return failure("error", e, 2);
-    } catch (const rsi::UsageError& e) {
-      return failure("error", e, 2);
     } catch (const rsi::OutputError& e) {
       return failure("error", e, 2);
-    } catch (const rsi::ReductionError& e) {
+    } catch (const rsi::BadInput& e) {
+      // failure_kinds.hpp: the case, an import, a reduction, a step or modes
+      // no solver resolves, the command line.
       return failure("error", e, 2);
-    } catch (const rsi::StabilityError& e) {
-      return failure("error", e, 2);
-    } catch (const rsi::ModalResolutionError& e) {
-      return failure("error", e, 2);
-    } catch (const rsi::ReducedIntegrationError& e) {
-      return failure("error: numerical failure", e, 3);
-    } catch (const rsi::ComponentIntegrationError& e) {
-      return failure("error: numerical failure", e, 3);
-    } catch (const rsi::IntegrationError& e) {
-      return failure("error: numerical failure", e, 3);
-    } catch (const rsi::MassFactorError& e) {
-      return failure("error: numerical failure", e, 3);
-    } catch (const rsi::ModalError& e) {
+    } catch (const rsi::NumericalFailure& e) {
+      // A factorization, a modal check or an integrator's monitor failed.
       return failure("error: numerical failure", e, 3);
     } catch (const std::bad_alloc&) {
       // Every allocation failure arrives here as std::bad_alloc: operator

@@ -119,15 +119,16 @@
 #include <Eigen/Core>
 
 #include "coulomb_gauss_seidel.hpp"
+#include "failure_kinds.hpp"
 #include "history.hpp"
 #include "reduced_basis.hpp"
 #include "rigid_casing.hpp"
 
 namespace rsi {
 
-class ComponentIntegrationError : public std::runtime_error {
+class ComponentIntegrationError : public NumericalFailure {
 public:
-  using std::runtime_error::runtime_error;
+  using NumericalFailure::NumericalFailure;
 };
 
 struct ComponentIntegratorOptions {

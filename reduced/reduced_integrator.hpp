@@ -119,6 +119,7 @@
 #include "casing_basis.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "critical_step.hpp"
+#include "failure_kinds.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
@@ -126,9 +127,9 @@
 
 namespace rsi {
 
-class ReducedIntegrationError : public std::runtime_error {
+class ReducedIntegrationError : public NumericalFailure {
 public:
-  using std::runtime_error::runtime_error;
+  using NumericalFailure::NumericalFailure;
 };
 
 /// The damping of a reduced run: empty or zero = undamped.

@@ -10,13 +10,15 @@
 
 #include <Eigen/Core>
 
+#include "failure_kinds.hpp"
+
 namespace rsi {
 
 /// A reduction that cannot be built as asked: more modes than exist, a
 /// boundary set making R_B numerically singular (exit status 2 in the CLI).
-class ReductionError : public std::invalid_argument {
+class ReductionError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 struct ReducedBasis {

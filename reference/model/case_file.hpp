@@ -12,12 +12,14 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "failure_kinds.hpp"
+
 namespace rsi {
 
 /// Bad input in a case file: unknown, missing, mistyped or out-of-range key.
-class CaseError : public std::invalid_argument {
+class CaseError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 /// Rectangular beam section: `width` out of plane, `thickness` in plane [m].

@@ -18,15 +18,16 @@
 #include <Eigen/SparseCore>
 
 #include "dof_map.hpp"
+#include "failure_kinds.hpp"
 
 namespace rsi {
 
 /// Bad input in an imported model (file and line named), or a model that is
 /// not a component (K or M not symmetric, M with a non-positive diagonal).
 /// Exit status 2 in the CLI.
-class ImportError : public std::invalid_argument {
+class ImportError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 struct ComponentNode {

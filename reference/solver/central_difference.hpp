@@ -96,6 +96,7 @@
 
 #include "case_file.hpp"
 #include "contact_law.hpp"
+#include "failure_kinds.hpp"
 #include "frictional_contact_law.hpp"
 #include "frictional_contact_problem.hpp"
 #include "frictional_contact_solver.hpp"
@@ -106,9 +107,9 @@
 namespace rsi {
 
 /// A numerical failure of the integrator (factorization, singular W).
-class IntegrationError : public std::runtime_error {
+class IntegrationError : public NumericalFailure {
 public:
-  using std::runtime_error::runtime_error;
+  using NumericalFailure::NumericalFailure;
 };
 
 class CentralDifference {

@@ -35,14 +35,15 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "failure_kinds.hpp"
 #include "sparse_rows.hpp"
 
 namespace rsi {
 
 /// The mass matrix is not symmetric positive definite.
-class MassFactorError : public std::runtime_error {
+class MassFactorError : public NumericalFailure {
 public:
-  using std::runtime_error::runtime_error;
+  using NumericalFailure::NumericalFailure;
 };
 
 class MassFactor {

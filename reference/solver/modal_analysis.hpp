@@ -46,19 +46,21 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "failure_kinds.hpp"
+
 namespace rsi {
 
-class ModalError : public std::runtime_error {
+class ModalError : public NumericalFailure {
 public:
-  using std::runtime_error::runtime_error;
+  using NumericalFailure::NumericalFailure;
 };
 
 /// Modes asked of a solver that cannot resolve them (exit status 2 in the
 /// CLI): every eigenvalue by the dense solver, whose resolution n eps
 /// lambda_max the lowest eigenvalue does not clear (see lowest_modes).
-class ModalResolutionError : public std::invalid_argument {
+class ModalResolutionError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 /// What the check of a set of modes found (solver/modal_check.hpp): every

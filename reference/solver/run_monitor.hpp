@@ -13,6 +13,7 @@
 
 #include "case_file.hpp"
 #include "casing.hpp"
+#include "failure_kinds.hpp"
 #include "history.hpp"
 
 namespace rsi {
@@ -25,9 +26,9 @@ inline double seconds_since(Clock::time_point start) {
 }
 
 /// Delta t at or above the stability limit 2/omega_max, not forced.
-class StabilityError : public std::invalid_argument {
+class StabilityError : public BadInput {
 public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
 struct RunOptions {
