@@ -16,15 +16,21 @@
  * max_allocation_size_mb does in the sanitizer build (its allocator cannot
  * be interposed, so the script uses that option there instead).
  *
+ * RSI_HEAP_LIMIT_REPORT=FILE: a line is appended to FILE at each refusal
+ * (by open/write, which allocate nothing), so that memory_limits.sh knows
+ * whether a command that completed met the limit at all.
+ *
  * Test support, not part of rsi: the counters are process-wide by nature
  * (one heap), updated atomically. */
 
 #define _GNU_SOURCE
 #include <errno.h>
+#include <fcntl.h>
 #include <malloc.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 extern void* __libc_malloc(size_t size);
 extern void* __libc_calloc(size_t count, size_t size);
@@ -51,11 +57,26 @@ static void configure(void) {
   __atomic_store_n(&configured, 1, __ATOMIC_RELEASE);
 }
 
+/* Appends a line to $RSI_HEAP_LIMIT_REPORT, if set; errno kept. */
+static void report_refusal(const char* line) {
+  const char* path = getenv("RSI_HEAP_LIMIT_REPORT");
+  if (!path || !*path) return;
+  const int saved = errno;
+  const int fd = open(path, O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd >= 0) {
+    ssize_t written = write(fd, line, strlen(line));
+    (void)written;
+    close(fd);
+  }
+  errno = saved;
+}
+
 /* Counts `size` bytes about to be allocated; 0 (and errno ENOMEM) if a
  * limit refuses them. */
 static int admit(size_t size) {
   configure();
   if (max_allocation != 0 && size > max_allocation) {
+    report_refusal("refused: one allocation above RSI_MAX_ALLOCATION_MB\n");
     errno = ENOMEM;
     return 0;
   }
@@ -63,6 +84,7 @@ static int admit(size_t size) {
     const size_t now = __atomic_add_fetch(&live_bytes, size, __ATOMIC_RELAXED);
     if (now > heap_limit) {
       __atomic_sub_fetch(&live_bytes, size, __ATOMIC_RELAXED);
+      report_refusal("refused: the live heap above RSI_HEAP_LIMIT_MB\n");
       errno = ENOMEM;
       return 0;
     }
