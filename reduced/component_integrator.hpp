@@ -18,7 +18,7 @@
 //   f(t) = f0 + f1 cos(omega_f t + phi_f),
 // f0, f1 each r entries or empty (= 0), applied from t = 0 on; none by
 // default (issue 12 item 5: the pressed oscillator of
-// verification/coulomb_oscillator.hpp needs a normal load and a tangential
+// verification/support/coulomb_oscillator.hpp needs a normal load and a tangential
 // one). Zero initial conditions (start()), or rest at q0 for tests. Every
 // time-n equation is discretized alike,
 //   M^ (x_{n+1} - 2 x_n + x_{n-1})/dt^2 + C^ (x_{n+1} - x_{n-1})/(2 dt) + K^ x_n

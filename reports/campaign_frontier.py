@@ -10,7 +10,7 @@ figures through the report's save(); every section is guarded on the runs
 present, so a campaign with only some axes (or only first-round runs) gets
 a sentence saying what is missing instead of a table.
 
-The error norms are SPEC §4 V6 as verification/error_norms.hpp computes
+The error norms are SPEC §4 V6 as verification/support/error_norms.hpp computes
 them: e2 = ||g - g_ref||_2 / ||g_ref||_2 and e_inf = max|g - g_ref| /
 max|g_ref| over the rows of the blade-1 gap history. gap_errors() below
 repeats the C++ loop in the same order of operations, so it gives the same
@@ -69,7 +69,7 @@ class Campaign:
 
 def gap_errors(reduced, reference):
     """(e2, e_inf) of the gap series `reduced` against `reference`, the loop
-    of verification/error_norms.hpp gap_errors in its order."""
+    of verification/support/error_norms.hpp gap_errors in its order."""
     if len(reduced) != len(reference):
         raise ValueError(f"gap_errors: the histories have {len(reduced)} and {len(reference)} rows")
     diff2 = ref2 = diff_max = ref_max = 0.0
@@ -558,7 +558,7 @@ def casing_section(c):
     L.append("The casing in N_c clamped-ring modes plus a static correction for the forcing, against the full "
              "casing, at the case step. e2 is against the reference; the casing's own error contribution is the "
              "e2 of the run's blade-1 gap history against the same bladed-disk basis with the full casing (for "
-             "example cb-88-c40 against cb-88), with the same definition as `verification/error_norms.hpp` "
+             "example cb-88-c40 against cb-88), with the same definition as `verification/support/error_norms.hpp` "
              f"(recomputed here from the two `history.csv`). Check of that Python e2: recomputed against the "
              f"reference for all {n} runs, it prints the same as `convergence.csv` (10 significant digits) for "
              f"{same} of them, e2 and e_inf, largest relative difference {worst:.1e}"

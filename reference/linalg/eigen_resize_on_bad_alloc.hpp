@@ -11,7 +11,7 @@
 // reports attempting double-free. Found under a heap limit in Eigen's
 // SparseLU (its memory expansion catches the std::bad_alloc and resizes
 // the same vector again), reproduced by a plain MatrixXd::resize
-// (verification/test_eigen_resize_on_bad_alloc).
+// (verification/linalg/test_eigen_resize_on_bad_alloc).
 //
 // This header is included first in every C++ file of the build (CMake:
 // -include), before any use of these types, and gives the resize of each

@@ -18,7 +18,7 @@
 //     sign and digits, or a sign and digits alone: "1.5+2" is 150); an
 //     empty mantissa reads as 0 (".", "+", "e5"), as gfortran reads it.
 // Each reading checked by running ccx 2.20 on a one-element deck holding
-// it (verification/test_calculix_deck.cpp lists them).
+// it (verification/imports/test_calculix_deck.cpp lists them).
 
 #include <cstdint>
 #include <optional>

@@ -58,7 +58,7 @@
 // rho = 7.85e-9 t/mm^3.
 //
 // Sizes measured with gmsh 4.8.4 and ccx 2.20 (Debian), default geometry,
-// element_size varied (verification/test_gmsh_blade, DISABLED_ScalingStudy).
+// element_size varied (verification/imports/test_gmsh_blade, DISABLED_ScalingStudy).
 // dofs = 3 (nodes - ROOT nodes) = the rows of ccx's .dof; gmsh = wall time
 // of write_gmsh_blade_deck; ccx = wall time of `ccx` on the deck with one
 // `*FREQUENCY, SOLVER=MATRIXSTORAGE` step; .sti = size of the stiffness
