@@ -284,7 +284,7 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--out", sweep.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
-  sweep_cmd->add_option("--speeds", sweep.speeds,
+  CLI::Option* sweep_speeds = sweep_cmd->add_option("--speeds", sweep.speeds,
                         "FROM:TO:COUNT or W1,W2,... [rad/s] in place of the case's sweep.speeds");
   CLI::Option* sweep_method =
       sweep_cmd
@@ -404,6 +404,9 @@ int main(int argc, char** argv) {
       }
       if (sweep_safety->count() > 0 && sweep.time_step != "own")
         throw rsi::UsageError("--step-safety: only with --time-step own; drop it");
+      if (sweep_speeds->count() > 0 && sweep.speeds.empty())
+        throw rsi::UsageError("--speeds: FROM:TO:COUNT or W1,W2,... [rad/s], 1 to 100000 speeds, "
+                              "got ''");
       for (const CLI::Option* o : {sweep_casing, sweep_selection, sweep_step, sweep_safety})
         if (o->count() > 0) sweep.paper_run_options.push_back(o->get_name());
       (void)sweep_method;
