@@ -106,9 +106,12 @@ def main():
     shown = [c for c in crossings if c[5] == first_run]
 
     # The map: tip displacement, contact fraction, contact force against speed.
-    panels = [("max_tip_radial", f"max |radial tip displacement| [{units.split(',')[0].strip() if units else ''}]"),
-              ("contact_fraction", "contact fraction"),
-              ("max_contact_force", "max normal contact force")]
+    # "N, mm, t, s": force, length, mass, time.
+    parts = [p.strip() for p in units.split(",")]
+    force_unit, length_unit = (parts[0], parts[1]) if len(parts) >= 2 else ("model", "model")
+    panels = [("max_tip_radial", f"max |radial tip displacement| [{length_unit}]"),
+              ("contact_fraction", "contact fraction (rows with a closed contact)"),
+              ("max_contact_force", f"max normal contact force [{force_unit}]")]
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 9), sharex=True)
     for ax, (key, label) in zip(axes, panels):
         for run in runs:
@@ -194,12 +197,19 @@ def main():
         if not y:
             continue
         i = max(range(len(y)), key=lambda j: (y[j] if not math.isnan(y[j]) else -1))
-        near = sorted((c for c in crossings if c[5] == run), key=lambda c: abs(c[0] - x[i]))
+        # Which line: the response's dominant frequency there, as an engine
+        # order of that speed, and the natural frequency nearest to it.
+        _, f1 = series(run, "f1_hz")
         note = ""
-        if near:
-            c = near[0]
-            note = (f"; the nearest line is EO {c[1]} on f{c[2]} = {c[3]:.1f} Hz at {c[0]:.1f} rad/s"
-                    f" ({'a casing order' if c[4] else 'an odd order'})")
+        if not math.isnan(f1[i]):
+            eo = f1[i] / (x[i] / (2 * math.pi))
+            blade_run = sorted({(int(l["mode"]), number(l["blade_hz"])) for l in lines if l["run"] == run})
+            note = f"; its dominant frequency is {f1[i]:.1f} Hz = {eo:.2f} x Omega/2pi"
+            if blade_run:
+                k, fk = min(blade_run, key=lambda p: abs(p[1] - f1[i]))
+                order = round(eo)
+                note += (f", nearest natural frequency f{k} = {fk:.1f} Hz, whose EO {order} line "
+                         f"crosses at {2 * math.pi * fk / order:.1f} rad/s" if order >= 1 else "")
         md.append(f"- {run}: the largest radial tip displacement, {y[i]:.4g}, is at {x[i]:g} rad/s{note}.")
     md += ["", "## Campbell diagram", "", "![Campbell diagram](sweep_campbell.png)", ""]
     failures = summary.get("failures", [])
