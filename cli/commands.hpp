@@ -107,7 +107,11 @@ struct SweepOptions {
   double step_safety = 0.9;
   int jobs = 0;       ///< threads a process; 0: 2 alone, 1 a rank under mpirun
   bool quiet = false; ///< no progress lines on stderr
-  bool report = true; ///< run reports/make_sweep_report.py at the end
+  bool report = true; ///< run the case's report generator (reports/) at the end
+  ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
+  /// The paper-case run options given (--casing-modes, --selection,
+  /// --time-step, --step-safety): a component case refuses them.
+  std::vector<std::string> paper_run_options;
 };
 
 /// --time-step of simulate and sweep: "case", "own" or a step in seconds

@@ -284,15 +284,16 @@ int main(int argc, char** argv) {
   sweep_cmd->add_option("--out", sweep.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
-  sweep_cmd->add_option("--speeds", sweep.speeds,
+  CLI::Option* sweep_speeds = sweep_cmd->add_option("--speeds", sweep.speeds,
                         "FROM:TO:COUNT or W1,W2,... [rad/s] in place of the case's sweep.speeds");
   CLI::Option* sweep_method =
       sweep_cmd
           ->add_option("--method", sweep.method,
-                       "one run in place of the case's sweep.runs: full, cb, ccm or guyan")
-          ->check(one_of({"full", "cb", "ccm", "guyan"}));
+                       "one run in place of the case's sweep.runs: full, cb, ccm, guyan, or "
+                       "macneal (a component case only)")
+          ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
   CLI::Option* sweep_modes =
-      sweep_cmd->add_option("--modes", sweep.modes, "with --method cb or ccm: modes kept")
+      sweep_cmd->add_option("--modes", sweep.modes, "with --method cb, ccm or macneal: modes kept")
           ->check(integer_in(0, 1000000000, modes_allowed));
   CLI::Option* sweep_step =
       sweep_cmd->add_option("--time-step", sweep.time_step,
@@ -317,7 +318,9 @@ int main(int argc, char** argv) {
       ->check(integer_in(1, 64, "an integer in [1, 64]"));
   sweep_cmd->add_flag("--quiet", sweep.quiet, "no progress lines on stderr");
   sweep_cmd->add_flag("!--no-report", sweep.report,
-                      "skip the report (reports/make_sweep_report.py, python3 + matplotlib)");
+                      "skip the report (reports/make_sweep_report.py or, for a component case, "
+                      "make_component_sweep_report.py; python3 + matplotlib)");
+  add_component_options(*sweep_cmd, sweep.load);
 
   rsi::ModalCampaignOptions modal_campaign;
   CLI::App* modal_campaign_cmd = app.add_subcommand(
@@ -401,6 +404,11 @@ int main(int argc, char** argv) {
       }
       if (sweep_safety->count() > 0 && sweep.time_step != "own")
         throw rsi::UsageError("--step-safety: only with --time-step own; drop it");
+      if (sweep_speeds->count() > 0 && sweep.speeds.empty())
+        throw rsi::UsageError("--speeds: FROM:TO:COUNT or W1,W2,... [rad/s], 1 to 100000 speeds, "
+                              "got ''");
+      for (const CLI::Option* o : {sweep_casing, sweep_selection, sweep_step, sweep_safety})
+        if (o->count() > 0) sweep.paper_run_options.push_back(o->get_name());
       (void)sweep_method;
       return rsi::run_sweep(sweep, output);
     }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -157,12 +158,21 @@ RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, i
   return s;
 }
 
+/// The run's Omega: the option's, else the case's.
+double run_speed(const RubbingModel& model, const RubbingRunOptions& options) {
+  return options.rotation_speed != 0.0 ? options.rotation_speed : model.setup.rotation_speed;
+}
+
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup;
+  const double omega = run_speed(model, options);
   const auto t0 = std::chrono::steady_clock::now();
-  const ReducedBasis basis = reduce(model.component.stiffness, model.component.mass,
-                                    model.component.boundary, options.method, options.modes);
+  std::optional<ReducedBasis> own;
+  if (options.basis == nullptr)
+    own = reduce(model.component.stiffness, model.component.mass, model.component.boundary,
+                 options.method, options.modes);
+  const ReducedBasis& basis = options.basis != nullptr ? *options.basis : *own;
   const auto run_start = std::chrono::steady_clock::now();
   const double basis_seconds = std::chrono::duration<double>(run_start - t0).count();
   CasingGap gap;
@@ -170,13 +180,13 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   gap.g0 = setup.gap;
   gap.width = setup.gap_width;
   const RigidCasing casing =
-      rigid_casing_of(model.component, model.contact_nodes, gap, setup.rotation_speed,
-                      setup.sliding_speed());
+      rigid_casing_of(model.component, model.contact_nodes, gap, omega,
+                      setup.sliding_against_rotation ? -omega : omega);
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
   if (model.component_case.damping.modal_ratio > 0.0)
     o.damping = modal_damping(basis, model.component_case.damping.modal_ratio);
-  const double sample_dt = model.period / setup.steps_per_revolution;
+  const double sample_dt = 2.0 * M_PI / std::abs(omega) / setup.steps_per_revolution;
   o.dt = sample_dt;
   o.force_step = true; // a probe, only for omega_max
   const double free_critical_dt = ComponentIntegrator(basis, casing, o).critical_dt();
@@ -230,11 +240,13 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
 RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                             std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup;
+  const double omega = run_speed(model, options);
   const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
                                         : ImposedGap::constant(setup.gap);
   const RigidSurfaceContact law(rigid_surface_nodes(model.component, model.contact_nodes), gap,
-                                setup.rotation_speed, setup.friction_coefficient,
-                                setup.sliding_speed(), model.component.rotation_axis);
+                                omega, setup.friction_coefficient,
+                                setup.sliding_against_rotation ? -omega : omega,
+                                model.component.rotation_axis);
   double omega_max = 0.0;
   try {
     omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
@@ -244,7 +256,7 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
     throw ModalError("the full-order run of " + model.component.name + ": " + e.what() +
                      "; or run a reduced --method (cb, ccm, macneal)");
   }
-  const double sample_dt = model.period / setup.steps_per_revolution;
+  const double sample_dt = 2.0 * M_PI / std::abs(omega) / setup.steps_per_revolution;
   RubbingRun run;
   run.step_limit = 2.0 / omega_max;
   const RunCounts counts =

@@ -27,6 +27,7 @@
 #include "component_case.hpp"
 #include "component_reference_run.hpp"
 #include "history.hpp"
+#include "reduced_basis.hpp"
 
 namespace rsi {
 
@@ -53,6 +54,13 @@ struct RubbingRunOptions {
   /// is refused (the campaign's full run: rubbing.campaign.full_revolutions).
   std::string revolutions_key = "rubbing.revolutions";
   bool force = false;          ///< integrate at or above the stable step
+  /// Omega [rad/s] in place of rubbing.rotation_speed (0: the case's): the
+  /// gap's phase, the sliding and the period T (rsi sweep's speeds).
+  double rotation_speed = 0.0;
+  /// A reduced method's basis built once for several runs (rsi sweep's
+  /// speeds share it: the rotation enters only through the contact); it
+  /// must be reduce()'s of this model, method and modes. nullptr: built here.
+  const ReducedBasis* basis = nullptr;
   std::function<void()> checkpoint;
   std::function<void(double)> progress;
 };

@@ -257,6 +257,90 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
   return out;
 }
 
+/// The optional "sweep" object (component_case.hpp, data/README.md).
+ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
+                                    const RubbingSetup& rubbing) {
+  ComponentSweep out;
+  ObjectReader sweep = top.object("sweep");
+  sweep.optional_note("note");
+  sweep.claim("speeds");
+  if (!value.contains("speeds"))
+    sweep.fail(sweep.full("speeds"), "missing: a list of speeds or {\"from\", \"to\", \"count\"}");
+  // Signed as rubbing.rotation_speed (the sign is the direction): nonzero,
+  // and one sign for the whole sweep (a map crosses no standstill).
+  const Range speed{-1e5, 1e5, true, true, "rad/s, nonzero"};
+  constexpr long max_speeds = 100000;
+  const json& sj = value.at("speeds");
+  if (sj.is_array()) {
+    if (sj.empty() || static_cast<long>(sj.size()) > max_speeds)
+      sweep.fail(sweep.full("speeds"), "must hold 1 to " + std::to_string(max_speeds) +
+                                           " rotation speeds, got " + std::to_string(sj.size()));
+    for (const json& v : sj) {
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || !speed.contains(v.get<double>()) ||
+          v.get<double>() == 0.0)
+        sweep.fail(sweep.full("speeds"), "must hold numbers in " + speed.text() + ", got " + v.dump());
+      out.speeds.push_back(v.get<double>());
+    }
+  } else {
+    ObjectReader range = sweep.object("speeds");
+    const double from = range.number("from", speed);
+    const double to = range.number("to", speed);
+    const int count = range.integer("count", 1, max_speeds);
+    range.finish();
+    if (count > 1 && !(to > from))
+      range.fail(range.full("to"), "must be above from = " + std::to_string(from) +
+                                       " rad/s when count > 1");
+    for (int i = 0; i < count; ++i)
+      out.speeds.push_back(count == 1 ? from : from + (to - from) * i / (count - 1));
+  }
+  for (double w : out.speeds) {
+    if (w == 0.0)
+      sweep.fail(sweep.full("speeds"), "must not hold 0 rad/s (a rubbing run needs a rotation)");
+    if ((w > 0.0) != (out.speeds.front() > 0.0))
+      sweep.fail(sweep.full("speeds"), "must all have one sign (the rotation's direction), got " +
+                                           std::to_string(out.speeds.front()) + " and " +
+                                           std::to_string(w) + " rad/s");
+  }
+  out.revolutions = rubbing.revolutions;
+  sweep.claim("revolutions");
+  if (value.contains("revolutions"))
+    out.revolutions = sweep.number("revolutions", {0.0, 1e5, true, false, ""});
+  sweep.claim("transient_revolutions");
+  if (value.contains("transient_revolutions"))
+    out.transient_revolutions = sweep.number(
+        "transient_revolutions",
+        {0.0, out.revolutions, false, true, "(below sweep.revolutions, " +
+                                                std::to_string(out.revolutions) + ")"});
+  sweep.claim("runs");
+  const json& runs = value.contains("runs") ? value.at("runs") : json();
+  if (!runs.is_array() || runs.empty())
+    sweep.fail(sweep.full("runs"), "must be a non-empty array of {\"method\": \"full\"} or "
+                                   "{\"method\": \"cb\"|\"ccm\"|\"guyan\"|\"macneal\", "
+                                   "\"modes\": [..]}");
+  for (size_t i = 0; i < runs.size(); ++i) {
+    ObjectReader run(runs[i], sweep.full("runs") + "[" + std::to_string(i) + "]", top.source());
+    const std::string method = string_value(run, runs[i], "method");
+    if (method == "full") {
+      run.finish(); // "modes" refused: the full model keeps every dof
+      out.runs.push_back({method, 0});
+      continue;
+    }
+    if (method != "cb" && method != "ccm" && method != "guyan" && method != "macneal")
+      run.fail(run.full("method"), "must be \"full\", \"cb\", \"ccm\", \"guyan\" or "
+                                   "\"macneal\", got \"" + method + "\"");
+    for (int m : integer_list(run, runs[i], "modes", method == "guyan" ? 0 : 1, 100000))
+      out.runs.push_back({method, m});
+    run.finish();
+  }
+  sweep.finish();
+  if (static_cast<double>(rubbing.steps_per_revolution) * out.revolutions > 2147483647.0)
+    sweep.fail(sweep.full("revolutions"),
+               "sweep.revolutions x rubbing.steps_per_revolution must be at most 2147483647 "
+               "(steps of one run), got " +
+                   std::to_string(out.revolutions * rubbing.steps_per_revolution));
+  return out;
+}
+
 /// "key '...'" of the model's source, for messages about the model itself.
 std::string source_key(const ComponentCase& c, const ComponentLoadOptions& options, bool material) {
   if (!options.source_override.empty())
@@ -434,6 +518,13 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   }
   top.claim("rubbing");
   if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
+  top.claim("sweep");
+  if (document.contains("sweep")) {
+    if (!c.rubbing)
+      top.fail("sweep", "needs the case's \"rubbing\" object (a component's sweep runs its "
+                        "rubbing set-up at each speed)");
+    c.sweep = read_component_sweep(top, document.at("sweep"), *c.rubbing);
+  }
   c.damping = read_damping(top, document);
   if (c.damping.projected_rayleigh)
     top.fail("damping.projected_rayleigh",

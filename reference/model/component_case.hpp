@@ -86,6 +86,24 @@ struct RubbingSetup {
   double full_revolutions = 0.0;    ///< the campaign's full reference window (0: none)
 };
 
+/// One run of a component sweep: "full" (modes 0) or a reduced method and
+/// its mode count.
+struct ComponentSweepRun {
+  std::string method; ///< "full", "cb", "ccm", "guyan" or "macneal"
+  int modes = 0;
+};
+
+/// The optional "sweep" object of a component case (`rsi sweep`): the
+/// rubbing run at each rotation speed, over `revolutions`, its indicators
+/// over t >= transient_revolutions x 2 pi / |Omega|.
+struct ComponentSweep {
+  std::vector<double> speeds; ///< Omega [rad/s]: nonzero, one sign, |Omega| < 1e5
+  double revolutions = 0.0;   ///< each run's length, > 0 (absent: rubbing.revolutions)
+  double transient_revolutions = 0.0; ///< in [0, revolutions)
+  std::vector<ComponentSweepRun> runs; ///< one a (method, mode count), in the file's order
+  bool present() const { return !speeds.empty(); }
+};
+
 struct ComponentCase {
   std::string case_path;
   std::string name;
@@ -103,6 +121,7 @@ struct ComponentCase {
   std::optional<ModalCampaign> modal_campaign;
   bool lumped_mass = false;            ///< "component.mass": "lumped" (HRZ)
   std::optional<RubbingSetup> rubbing;
+  ComponentSweep sweep; ///< empty (no speeds) when the file has no "sweep"
   Damping damping;
 };
 

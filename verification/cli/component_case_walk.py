@@ -151,6 +151,7 @@ COMMANDS = {
     "rubbing": [["simulate", "--method", "full"], ["simulate", "--method", "cb", "--modes", "2"]],
     "campaign": [["campaign", "--no-report"]],
     "modal": [["modal-campaign", "--no-report"]],
+    "sweep": [["sweep", "--no-report", "--quiet"]],
 }
 
 counter = [0]
@@ -220,6 +221,11 @@ def constant_gap(c):
     c["rubbing"]["gap"] = {"constant": -0.002}
 
 
+# The brick's rubbing run over two speeds (rsi sweep on a component case).
+SWEEP_BASE = copy.deepcopy(BASE)
+SWEEP_BASE["sweep"] = {"speeds": [1000, 1344], "revolutions": 0.3, "transient_revolutions": 0.1,
+                       "runs": [{"method": "cb", "modes": [2]}]}
+
 WALK = {
     "component.name": (BASE, "export", [with_value("component.name", "block")]),
     "component.source.calculix_deck": (BASE, "modes", [with_value("component.source.calculix_deck", "brick-soft.inp")]),
@@ -251,6 +257,13 @@ WALK = {
     "rubbing.campaign.runs": (BASE, "campaign", [with_value("rubbing.campaign.runs", [{"method": "macneal", "modes": [2]}]),
                                                  with_value("rubbing.campaign.runs", [{"method": "cb", "modes": [3]}])]),
     "rubbing.campaign.full_revolutions": (BASE, "campaign", [with_value("rubbing.campaign.full_revolutions", 0.28)]),
+    "sweep": (SWEEP_BASE, "sweep", [lambda c: removing(c, "sweep")]),
+    "sweep.speeds": (SWEEP_BASE, "sweep", [with_value("sweep.speeds", [1000, 1200]),
+                                           with_value("sweep.speeds", {"from": 900, "to": 1300, "count": 3})]),
+    "sweep.revolutions": (SWEEP_BASE, "sweep", [with_value("sweep.revolutions", 0.25)]),
+    "sweep.transient_revolutions": (SWEEP_BASE, "sweep", [with_value("sweep.transient_revolutions", 0.15)]),
+    "sweep.runs": (SWEEP_BASE, "sweep", [with_value("sweep.runs", [{"method": "macneal", "modes": [2]}]),
+                                         with_value("sweep.runs", [{"method": "full"}])]),
     "damping": (BASE, "rubbing", [lambda c: removing(c, "damping")]),
     "damping.rayleigh.alpha": (BASE, "full", [with_value("damping.rayleigh.alpha", 100.0)]),
     "damping.rayleigh.beta": (BASE, "full", [with_value("damping.rayleigh.beta", 1e-6)]),
@@ -258,7 +271,7 @@ WALK = {
     "damping.projected_rayleigh": (BASE, "full", [with_value("damping.projected_rayleigh", True)]),
 }
 # Free text: read, checked as strings, and on purpose without effect.
-EXEMPT = {"description": "free text", "damping.note": "free text"}
+EXEMPT = {"description": "free text", "damping.note": "free text", "sweep.note": "free text"}
 GMSH_KEYS = ["span", "chord", "thickness", "camber", "twist_deg", "stagger_deg", "root_length",
              "root_width", "root_height", "root_radius", "element_size", "young_modulus",
              "poisson_ratio", "density"]
@@ -317,7 +330,7 @@ def main():
     order = [k for k in documented if k in WALK] + [k for k in WALK if k not in documented]
     for key in order:
         base, commands, variants = WALK[key]
-        tag = ("blade" if base is BLADE else "brick", commands)
+        tag = ("blade" if base is BLADE else "sweep" if base is SWEEP_BASE else "brick", commands)
         if tag not in bases:
             first = run(copy.deepcopy(base), commands)
             again = run(copy.deepcopy(base), commands)

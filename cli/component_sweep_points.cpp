@@ -1,0 +1,292 @@
+#include "component_sweep_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+
+#include "interruption.hpp"
+#include "modal_analysis.hpp"
+#include "reduction.hpp"
+#include "rigid_surface_contact.hpp"
+#include "rubbing_indicators.hpp"
+#include "rubbing_run.hpp"
+#include "run_monitor.hpp"
+#include "run_outputs.hpp"
+#include "sweep_speeds_option.hpp"
+
+namespace rsi {
+namespace {
+
+/// Lowest natural frequencies written a run (interaction_lines.csv).
+constexpr int blade_frequencies = 5;
+/// Engine orders of interaction_lines.csv: 1 .. this.
+constexpr int engine_orders = 10;
+
+struct PreparedRun {
+  ComponentSweepRun run;
+  std::optional<ReducedBasis> basis; ///< reduced methods
+  double basis_seconds = 0.0;
+  int coordinates = 0;
+  std::vector<double> frequencies_hz; ///< the lowest natural frequencies, ascending
+};
+
+std::string run_name_of(const ComponentSweepRun& run) {
+  return run.method == "full" ? "full" : run.method + "-" + std::to_string(run.modes);
+}
+
+/// The lowest natural frequencies of a run's model, tip free [Hz]: a
+/// massless boundary's kept modes (its M^ is singular), else the dense
+/// pencil (K^, M^), or the full model's lowest_modes; empty if the full
+/// model's mass is singular (no full run can use it either).
+std::vector<double> natural_frequencies(const RubbingModel& model, const PreparedRun& r) {
+  std::vector<double> hz;
+  if (r.basis && r.basis->massless_boundary) {
+    for (Eigen::Index i = 0; i < r.basis->mode_omega.size(); ++i)
+      hz.push_back(r.basis->mode_omega(i) / (2.0 * M_PI));
+  } else if (r.basis) {
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> e(
+        r.basis->stiffness, r.basis->mass, Eigen::EigenvaluesOnly);
+    if (e.info() == Eigen::Success)
+      for (Eigen::Index i = 0; i < e.eigenvalues().size(); ++i)
+        hz.push_back(std::sqrt(std::max(0.0, e.eigenvalues()(i))) / (2.0 * M_PI));
+  } else {
+    try {
+      const Modes modes = lowest_modes(model.component.stiffness, model.component.mass,
+                                       std::min(blade_frequencies, model.component.n_dofs() - 1));
+      for (int i = 0; i < modes.n_modes(); ++i)
+        hz.push_back(modes.frequency_hz(i));
+    } catch (const ModalError&) {
+      hz.clear();
+    }
+  }
+  std::sort(hz.begin(), hz.end());
+  if (static_cast<int>(hz.size()) > blade_frequencies) hz.resize(blade_frequencies);
+  return hz;
+}
+
+class ComponentSweepPoints : public SweepPoints {
+public:
+  ComponentSweepPoints(RubbingModel model, ComponentSweep sweep, std::vector<PreparedRun> runs)
+      : m_model(std::move(model)), m_sweep(std::move(sweep)), m_runs(std::move(runs)) {}
+
+  const std::vector<double>& speeds() const override { return m_sweep.speeds; }
+  int n_runs() const override { return static_cast<int>(m_runs.size()); }
+  std::string run_name(int run) const override {
+    return run_name_of(m_runs[static_cast<size_t>(run)].run);
+  }
+  void prepare() override {} // the bases were built with the input checks
+
+  /// Samples x coordinates: the steps a sample (more as Omega falls, for
+  /// the mass-carrying runs) are left out of this weight.
+  double cost(double, int run) const override {
+    return m_sweep.revolutions * m_model.setup.steps_per_revolution *
+           m_runs[static_cast<size_t>(run)].coordinates;
+  }
+
+  std::string csv_header() const override {
+    return "speed_rad_s,run,method,modes,status,diverged,rows,max_tip_radial,max_contact_force,"
+           "contact_fraction,energy_ratio,balance_residual,f1_hz,a1,f2_hz,a2,f3_hz,a3\n";
+  }
+
+  SweepTaskResult run(double speed, int run, bool inject_failure) const override {
+    const PreparedRun& r = m_runs[static_cast<size_t>(run)];
+    const RubbingSetup& setup = m_model.setup;
+    const double period = 2.0 * M_PI / std::abs(speed);
+    const double interval = period / setup.steps_per_revolution * setup.output_every;
+    // The casing law of this speed, for g0_c(t) (the runs build their own).
+    const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
+                                          : ImposedGap::constant(setup.gap);
+    const RigidSurfaceContact casing(rigid_surface_nodes(m_model.component, m_model.contact_nodes),
+                                     gap, speed, setup.friction_coefficient,
+                                     setup.sliding_against_rotation ? -speed : speed,
+                                     m_model.component.rotation_axis);
+    RubbingIndicatorAccumulator indicators(casing, m_sweep.transient_revolutions * period,
+                                           interval);
+    RubbingRunOptions options;
+    options.method = r.run.method;
+    options.modes = r.run.modes;
+    options.revolutions = m_sweep.revolutions;
+    options.revolutions_key = "sweep.revolutions";
+    options.rotation_speed = speed;
+    options.basis = r.basis ? &*r.basis : nullptr;
+    options.checkpoint = throw_if_interrupted;
+    SweepTaskResult out;
+    try {
+      if (inject_failure)
+        throw std::runtime_error("injected failure (RSI_SWEEP_FAIL_SPEED, for the tests)");
+      const RubbingRun result =
+          run_rubbing(m_model, options, [&](const HistoryRow& row, double response) {
+            indicators.add(row, response);
+          });
+      out.seconds = result.summary.wall_seconds;
+      const double residual = result.summary.energy_scale > 0.0
+                                  ? result.summary.energy_balance_error / result.summary.energy_scale
+                                  : 0.0;
+      out.row = csv_row(speed, r.run, result.summary.completed ? "completed" : "diverged",
+                        indicators.finish(), residual);
+    } catch (const Interrupted&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw; // out of memory ends the sweep, not one speed
+    } catch (const std::exception& e) {
+      out.row = failed_row(speed, run);
+      out.error = e.what();
+    }
+    return out;
+  }
+
+  std::string failed_row(double speed, int run) const override {
+    return row_start(speed, m_runs[static_cast<size_t>(run)].run, "failed") + ",,,,,,,,,,,\n";
+  }
+
+  std::vector<std::pair<std::string, std::string>> side_files() const override {
+    std::string lines = "run,mode,blade_hz,engine_order,casing_harmonic,speed_rad_s\n";
+    const bool oval = m_model.setup.oval_gap;
+    const double sign = m_sweep.speeds.front() > 0.0 ? 1.0 : -1.0;
+    for (const PreparedRun& r : m_runs)
+      for (size_t k = 0; k < r.frequencies_hz.size(); ++k)
+        for (int eo = 1; eo <= engine_orders; ++eo) {
+          lines += run_name_of(r.run) + "," + std::to_string(k + 1) + ",";
+          append_csv_number(lines, r.frequencies_hz[k]);
+          lines += "," + std::to_string(eo) + "," + (oval && eo % 2 == 0 ? "1" : "0") + ",";
+          append_csv_number(lines, sign * 2.0 * M_PI * r.frequencies_hz[k] / eo);
+          lines += "\n";
+        }
+    return {{"interaction_lines.csv", lines}};
+  }
+
+  nlohmann::json summary() const override {
+    const RubbingSetup& setup = m_model.setup;
+    nlohmann::json s;
+    s["case_kind"] = "component";
+    s["component"] = m_model.component.name;
+    s["units"] = m_model.component_case.units;
+    s["revolutions"] = m_sweep.revolutions;
+    s["transient_revolutions"] = m_sweep.transient_revolutions;
+    s["steps_per_revolution"] = setup.steps_per_revolution;
+    s["output_every"] = setup.output_every;
+    s["contact_nodes"] = m_model.contact_nodes.size();
+    s["response"] = m_model.response_name;
+    s["gap"] = setup.oval_gap ? "oval, 2 lobes" : "constant";
+    s["tip_sliding"] = setup.sliding_against_rotation ? "against_rotation" : "with_rotation";
+    s["friction_coefficient"] = setup.friction_coefficient;
+    s["modal_ratio"] = m_model.component_case.damping.modal_ratio;
+    s["window"] = "Hann (periodic), t >= transient, the response dof " + m_model.response_name +
+                  ", mean removed; resolution 1/(rows x output interval)";
+    return s;
+  }
+
+  nlohmann::json run_summary(int run) const override {
+    const PreparedRun& r = m_runs[static_cast<size_t>(run)];
+    return {{"method", r.run.method},
+            {"modes", r.run.modes},
+            {"basis_s", r.basis_seconds},
+            {"coordinates", r.coordinates},
+            {"natural_frequencies_hz", r.frequencies_hz}};
+  }
+
+  std::string report_script() const override { return "make_component_sweep_report.py"; }
+
+private:
+  static std::string row_start(double speed, const ComponentSweepRun& run,
+                               const std::string& status) {
+    std::string row;
+    append_csv_number(row, speed);
+    return row + "," + run_name_of(run) + "," + run.method + "," + std::to_string(run.modes) +
+           "," + status + "," + (status == "diverged" ? "1" : "0");
+  }
+
+  static std::string csv_row(double speed, const ComponentSweepRun& run, const std::string& status,
+                             const RubbingIndicators& ind, double residual) {
+    std::string row = row_start(speed, run, status) + "," + std::to_string(ind.rows);
+    for (double x : {ind.max_tip_radial, ind.max_contact_force, ind.contact_fraction,
+                     ind.energy_ratio, residual}) {
+      row += ",";
+      if (ind.rows > 0 && std::isfinite(x)) append_csv_number(row, x);
+    }
+    for (size_t i = 0; i < 3; ++i) {
+      row += ",";
+      if (i < ind.peaks.size()) append_csv_number(row, ind.peaks[i].frequency_hz);
+      row += ",";
+      if (i < ind.peaks.size()) append_csv_number(row, ind.peaks[i].amplitude);
+    }
+    return row + "\n";
+  }
+
+  RubbingModel m_model;
+  ComponentSweep m_sweep;
+  std::vector<PreparedRun> m_runs;
+};
+
+} // namespace
+
+std::unique_ptr<SweepPoints> component_sweep_points(const ComponentCase& c,
+                                                    const SweepOptions& options) {
+  for (const std::string& name : options.paper_run_options)
+    throw UsageError(name + ": only for the paper's case (a component's runs step at "
+                            "rubbing.step_safety of their own limit, on the whole casing); drop it");
+  if (!c.rubbing)
+    throw CaseError(c.case_path + ": key 'rubbing': missing (a component's sweep runs its "
+                                  "rubbing set-up at each speed; data/README.md)");
+  ComponentSweep sweep = c.sweep;
+  if (!sweep.present() && (options.speeds.empty() || options.method.empty()))
+    throw UsageError(c.case_path + ": key 'sweep': missing; a component's sweep needs its "
+                                   "speeds and runs (data/README.md), or --speeds and --method");
+  if (!sweep.present()) sweep.revolutions = c.rubbing->revolutions;
+  if (!options.speeds.empty()) {
+    sweep.speeds = parse_speeds_option(options.speeds, SpeedSign::any);
+    for (double w : sweep.speeds) {
+      if (w == 0.0)
+        throw UsageError("--speeds: a component's speeds must be nonzero (a rubbing run needs a "
+                         "rotation), got '" + options.speeds + "'");
+      if ((w > 0.0) != (sweep.speeds.front() > 0.0))
+        throw UsageError("--speeds: a component's speeds must all have one sign (the rotation's "
+                         "direction), got '" + options.speeds + "'");
+    }
+  }
+  if (!options.method.empty()) {
+    const std::string& m = options.method;
+    if (m != "full" && m != "cb" && m != "ccm" && m != "guyan" && m != "macneal")
+      throw UsageError("--method: a component case takes full, cb, ccm, guyan or macneal, got '" +
+                       m + "'");
+    if (m != "full" && m != "guyan" && options.modes < 1)
+      throw UsageError("--modes: --method " + m + " needs its mode count (>= 1)");
+    sweep.runs = {{m, m == "full" ? 0 : options.modes}};
+  }
+  const RubbingSetup& setup = *c.rubbing;
+  const double rows_after = std::floor((sweep.revolutions - sweep.transient_revolutions) *
+                                       setup.steps_per_revolution / setup.output_every);
+  if (rows_after < 16)
+    throw CaseError(c.case_path + ": key 'sweep.transient_revolutions': " +
+                    std::to_string(static_cast<long>(rows_after)) +
+                    " history rows after it, fewer than the 16 the spectrum needs (sweep."
+                    "revolutions x rubbing.steps_per_revolution / rubbing.output_every)");
+  RubbingModel model = load_rubbing_model(c, options.load);
+  std::vector<PreparedRun> runs(sweep.runs.size());
+  const std::string where = options.method.empty() ? c.case_path + ": key 'sweep.runs': run "
+                                                   : "--method " + options.method + ": ";
+  for (size_t j = 0; j < runs.size(); ++j) {
+    PreparedRun& r = runs[j];
+    r.run = sweep.runs[j];
+    r.coordinates = model.component.n_dofs();
+    if (r.run.method != "full") {
+      const Clock::time_point t = Clock::now();
+      try {
+        r.basis = reduce(model.component.stiffness, model.component.mass, model.component.boundary,
+                         r.run.method, r.run.modes);
+      } catch (const ReductionError& e) {
+        throw ReductionError(where + run_name_of(r.run) + ": " + e.what());
+      }
+      r.basis_seconds = seconds_since(t);
+      r.coordinates = r.basis->n_reduced();
+    }
+    r.frequencies_hz = natural_frequencies(model, r);
+  }
+  return std::make_unique<ComponentSweepPoints>(std::move(model), std::move(sweep),
+                                                std::move(runs));
+}
+
+} // namespace rsi

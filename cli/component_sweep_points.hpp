@@ -1,0 +1,30 @@
+#pragma once
+// The sweep of a component case (a 3D blade rubbing on its rigid casing,
+// rubbing_run.hpp): the rubbing run at each speed of its "sweep" object
+// (or --speeds), over sweep.revolutions, for each of its runs (full, or a
+// reduced method and mode count: cb, ccm, guyan, macneal); each history
+// reduced to a row of indicators (sweep/rubbing_indicators.hpp).
+//
+// Beside sweep.csv, interaction_lines.csv: for each run, the blade's
+// lowest natural frequencies f_k (its tip free, not spinning: the reduced
+// model's, or the full model's) and, for engine orders EO = 1 .. 10, the
+// speed Omega = 2 pi f_k / EO where the EO-th harmonic of the rotation
+// meets f_k. The oval casing has two lobes (g0 has period pi in theta), so
+// it forces at 2 Omega / 2 pi and its harmonics: EO = 2, 4, 6, 8, 10 are
+// the casing's own lines (column `casing_harmonic` = 1); the odd orders are
+// listed for the map's reading (a constant gap forces at none).
+
+#include <memory>
+
+#include "commands.hpp"
+#include "sweep_points.hpp"
+
+namespace rsi {
+
+/// Checks the case's "sweep" object (or the options in place of it) and
+/// loads the model and the reduced bases; throws UsageError, CaseError,
+/// ImportError or ReductionError (exit 2) before anything is written.
+std::unique_ptr<SweepPoints> component_sweep_points(const ComponentCase& c,
+                                                    const SweepOptions& options);
+
+} // namespace rsi
