@@ -216,6 +216,10 @@ double median(std::vector<double> x) {
 
 int run_sweep(const SweepOptions& options, StagedOutput& output) {
   MpiSession mpi;
+  // Declared after `mpi`: an error or a signal removes the staged output
+  // before MPI_Finalize, which waits for the other ranks (mpirun kills a
+  // rank that waits too long: nothing of its --out must be left then).
+  const StagedOutput::AbandonOnThrow abandon_before_finalize(output);
   const Clock::time_point start = Clock::now();
   Case c = load_case(options.case_path);
   if (!c.sweep.present())
@@ -372,7 +376,8 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
       } else if (m.kind == RankMessage::Kind::fatal) {
         ++ranks_done;
         // The rank's tasks that never came are failed rows: the sweep goes on.
-        for (int t = 0; t < n_tasks; ++t)
+        // (A row before `written` came and was written: not lost.)
+        for (int t = written; t < n_tasks; ++t)
           if (owner[static_cast<size_t>(t)] == m.rank && !rows[static_cast<size_t>(t)]) {
             TaskResult lost;
             lost.task = t;
@@ -409,7 +414,7 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
   for (std::thread& t : threads)
     t.join();
   if (!fatal.empty()) {
-    if (mpi.rank() != 0) mpi.send_fatal(fatal);
+    if (mpi.rank() != 0) mpi.end_reported(fatal);
     throw_if_interrupted();
     throw std::runtime_error("sweep: " + fatal);
   }
@@ -455,8 +460,8 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
               seconds_since(start));
   for (const std::string& f : failures)
     std::fprintf(stderr, "rsi: sweep: failed: %s\n", f.c_str());
-  std::printf("wrote %s/sweep.csv, %s/interaction_lines.csv, %s/sweep_summary.json\n",
-              options.out.c_str(), options.out.c_str(), options.out.c_str());
+  output.announce("wrote " + options.out + "/sweep.csv, " + options.out + "/interaction_lines.csv, " +
+                  options.out + "/sweep_summary.json\n");
   if (options.report) {
     std::fflush(stdout);
     const int status = run_report_script("make_sweep_report.py", stage);
@@ -467,7 +472,7 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
                    RSI_REPORTS_DIR, status, options.out.c_str());
       return 1;
     }
-    std::printf("report: %s/sweep_report.md\n", options.out.c_str());
+    output.announce("report: " + options.out + "/sweep_report.md\n");
   }
   if (!failures.empty()) {
     std::fprintf(stderr,
