@@ -18,7 +18,7 @@
 # The limit is 20 s from the signal to rsi's exit (measured: see
 # verification/HARDENING.md; the factorisation of K and one dense step of
 # the block method are not polled). Skipped (exit 77, said) without gmsh
-# or ccx.
+# or ccx, or without ../shared/external/rotor37.
 # Usage: signals_children.sh RSI SOURCE_DIR CCX_CACHE
 set -u
 rsi=$1
@@ -30,6 +30,11 @@ for tool in gmsh ccx; do
     exit 77
   fi
 done
+deck=$src/data/cases/../../../shared/external/rotor37/blade.inp
+if [ ! -f "$deck" ]; then
+  echo "skipped: the Rotor 37 deck ../shared/external/rotor37/blade.inp is not there"
+  exit 77
+fi
 work=$(mktemp -d)
 pid=""
 cleanup() {
