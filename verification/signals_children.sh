@@ -72,12 +72,16 @@ interrupt() {
   case $ready in
   sleep:*) sleep "${ready#sleep:}" ;;
   child:*)
+    # A child that has run for 1 s (rsi may start one briefly before).
     for _ in $(seq 1 3000); do # up to 300 s (gmsh first, on a loaded machine)
       child=$(pgrep -P "$pid" -x "${ready#child:}" || true)
-      [ -z "$child" ] && kill -0 "$pid" 2>/dev/null || break
+      if [ -n "$child" ]; then
+        sleep 1
+        kill -0 "$child" 2>/dev/null && break
+      fi
+      kill -0 "$pid" 2>/dev/null || break
       sleep 0.1
     done
-    sleep 1
     ;;
   esac
   if ! kill -0 "$pid" 2>/dev/null; then

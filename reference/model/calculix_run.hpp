@@ -9,7 +9,7 @@
 // child_process.hpp). ccx exits 0 when its writes fail (a full disk), so
 // the matrices are checked whole before they are cached, and again when a
 // cached entry is found (one cut since is run again): JOB.dof lists n dofs,
-// JOB.sti and JOB.mas end with the entry "n n value" and have one size.
+// JOB.sti and JOB.mas end with the entry "n n value".
 // Cut files are refused (ImportError: the disk may be full, nothing cached).
 
 #include <string>
