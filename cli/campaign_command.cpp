@@ -320,8 +320,8 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
                     options.target_e2, method, modes);
     }
   }
-  std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
-              options.out.c_str(), options.out.c_str());
+  output.announce("wrote " + options.out + "/convergence.csv and " + options.out +
+                  "/runs/*/{history.csv,summary.json}\n");
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const CampaignResult& r) { return r.error.empty(); });
   if (options.report) {
@@ -335,7 +335,7 @@ int run_campaign(const CampaignOptions& options, StagedOutput& output) {
                    RSI_REPORTS_DIR, status, options.out.c_str());
       return 1;
     }
-    std::printf("report: %s/report.md\n", options.out.c_str());
+    output.announce("report: " + options.out + "/report.md\n");
   }
   if (all_ok) return 0;
   // Exit 3: one error line; each failed run's line above says what failed

@@ -69,7 +69,7 @@ int run_component_simulate(const SimulateOptions& options, const ComponentCase& 
               s.stick_contact_steps, s.slip_contact_steps);
   std::printf("energy balance error %.3e (scale %.3e); W_contact %.6e, W_damp %.6e\n",
               s.energy_balance_error, s.energy_scale, s.final_contact_work, s.final_damping_work);
-  std::printf("wrote %s/history.csv, %s/summary.json\n", options.out.c_str(), options.out.c_str());
+  output.announce("wrote " + options.out + "/history.csv, " + options.out + "/summary.json\n");
   if (s.completed) return 0;
   // Exit 3 says what to change: the step (above its limit only with
   // --force) or the contact's friction.

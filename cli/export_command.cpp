@@ -38,13 +38,15 @@ std::string nodes_csv(const std::vector<ComponentNode>& nodes) {
 }
 
 /// Writes into `dir` (staged); `shown` is the folder named in the message.
-void write_component(const std::string& dir, const std::string& shown, const Component& c) {
+void write_component(const std::string& dir, const std::string& shown, const Component& c,
+                     StagedOutput& output) {
   write_symmetric_matrix_market(dir + "/K.mtx", c.stiffness);
   write_symmetric_matrix_market(dir + "/M.mtx", c.mass);
   write_text_file(dir + "/dofs.csv", dofs_csv(c.dofs));
   write_text_file(dir + "/nodes.csv", nodes_csv(c.nodes));
-  std::printf("wrote %s/{K.mtx,M.mtx,dofs.csv,nodes.csv}: %d dofs, %zu nodes, %zu boundary dofs\n",
-              shown.c_str(), c.n_dofs(), c.nodes.size(), c.boundary.size());
+  output.announce("wrote " + shown + "/{K.mtx,M.mtx,dofs.csv,nodes.csv}: " +
+                  std::to_string(c.n_dofs()) + " dofs, " + std::to_string(c.nodes.size()) +
+                  " nodes, " + std::to_string(c.boundary.size()) + " boundary dofs\n");
 }
 
 } // namespace
@@ -59,7 +61,7 @@ int run_export(const ExportOptions& options, StagedOutput& output) {
   for (const Component& c : components)
     output.make(dir + "/" + c.name);
   for (const Component& c : components)
-    write_component(dir + "/" + c.name, options.out + "/" + c.name, c);
+    write_component(dir + "/" + c.name, options.out + "/" + c.name, c, output);
   return 0;
 }
 

@@ -6,19 +6,11 @@
 namespace rsi {
 namespace {
 
-volatile std::sig_atomic_t received = 0;
-
 extern "C" void record_signal(int signal) {
-  received = signal;
+  record_interruption(signal);
 }
 
 } // namespace
-
-Interrupted::Interrupted(int signal)
-    : std::runtime_error(std::string("interrupted by ") +
-                         (signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal") +
-                         ": the run was abandoned and none of its output kept")
-    , m_signal(signal) {}
 
 void install_interruption_handlers() {
   struct sigaction action;
@@ -31,11 +23,7 @@ void install_interruption_handlers() {
 }
 
 int pending_signal() {
-  return received;
-}
-
-void throw_if_interrupted() {
-  if (const int signal = received; signal != 0) throw Interrupted(signal);
+  return pending_interruption();
 }
 
 } // namespace rsi

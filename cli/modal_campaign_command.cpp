@@ -145,8 +145,8 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
   write_text_file(stage + "/modal_convergence.csv", stream_text(table));
   write_text_file(stage + "/modal_errors.csv", stream_text(errors));
   write_text_file(stage + "/modal_summary.json", summary.dump(2) + "\n");
-  std::printf("wrote %s/{modal_convergence.csv,modal_errors.csv,modal_summary.json}\n",
-              options.out.c_str());
+  output.announce("wrote " + options.out +
+                  "/{modal_convergence.csv,modal_errors.csv,modal_summary.json}\n");
   if (options.report) {
     std::fflush(stdout);
     const int status = run_report_script("make_modal_report.py", stage);
@@ -158,7 +158,7 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
                    status, options.out.c_str());
       return 1;
     }
-    std::printf("report: %s/modal_report.md\n", options.out.c_str());
+    output.announce("report: " + options.out + "/modal_report.md\n");
   }
   return 0;
 }

@@ -133,7 +133,7 @@ int run_modes(const ModesOptions& options, StagedOutput& output) {
     std::printf("\n");
   }
   if (shown < modes.n_modes()) std::printf("   ... %d more\n", modes.n_modes() - shown);
-  std::printf("wrote %s\n", path.c_str());
+  output.announce("wrote " + path + "\n");
   return 0;
 }
 

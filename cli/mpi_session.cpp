@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <stdexcept>
 #include <vector>
 
@@ -46,7 +47,14 @@ MpiSession::MpiSession() {
 }
 
 MpiSession::~MpiSession() {
-  if (m_initialised) MPI_Finalize();
+  if (!m_initialised) return;
+  // Rank 0 leaving by an exception (a signal, bad input, a failed write):
+  // MPI_Finalize would wait for the other ranks' runs, or forever for a
+  // rank that was killed, and mpirun would SIGKILL rank 0 before it says
+  // why. Leaving without it, rank 0 prints its line and exits; mpirun then
+  // ends the other ranks (and says so).
+  if (m_rank == 0 && std::uncaught_exceptions() > 0) return;
+  MPI_Finalize();
 }
 
 void MpiSession::send_task(int task, double seconds, const std::string& row) const {
@@ -67,6 +75,14 @@ void MpiSession::send_fatal(const std::string& what) const {
   check(MPI_Send(what.data(), static_cast<int>(what.size()), MPI_CHAR, 0, fatal_tag,
                  MPI_COMM_WORLD),
         "MPI_Send");
+}
+
+void MpiSession::end_reported(const std::string& what) {
+  send_fatal(what);
+  if (m_initialised) MPI_Finalize();
+  m_initialised = false;
+  std::fflush(nullptr);
+  std::_Exit(0);
 }
 
 bool MpiSession::poll(RankMessage& message) const {

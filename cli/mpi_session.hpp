@@ -25,7 +25,9 @@ public:
   /// calling thread talks to MPI), else a session of one rank. Ranks other
   /// than 0 send their stdout and stderr to /dev/null.
   MpiSession();
-  /// MPI_Finalize if it was initialised.
+  /// MPI_Finalize if it was initialised, except on rank 0 during the
+  /// unwinding of an exception: rank 0 then exits without it (it would wait
+  /// for the other ranks), and mpirun ends the job.
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
@@ -38,6 +40,14 @@ public:
   void send_task(int task, double seconds, const std::string& row) const;
   void send_done() const;
   void send_fatal(const std::string& what) const;
+  /// A rank other than 0 that cannot go on (a signal, out of memory):
+  /// sends `what` to rank 0 (send_fatal), finalizes MPI and ends the
+  /// process with status 0. Rank 0 speaks for the job: it writes a failed
+  /// row for each of this rank's runs that never came, names the rank and
+  /// `what` in the summary, publishes and exits 3. A non-zero status here
+  /// would make mpirun abort the job and kill rank 0 before it publishes
+  /// (measured: --out left with the lock and the staging folder).
+  [[noreturn]] void end_reported(const std::string& what);
   /// Rank 0: the next message that has arrived, without waiting; false when none.
   bool poll(RankMessage& message) const;
 

@@ -63,9 +63,9 @@ int run_reduce(const ReduceOptions& options, StagedOutput& output) {
     std::printf(", cond(R_B) %.3e", basis.cond_rb);
   if (basis.massless_boundary)
     std::printf(", massless boundary (omega_max of the condensed model)");
-  std::printf("; loaded in %.3f s, built in %.3f s, peak memory %.0f MB\nwrote %s/{K.mtx,M.mtx,T.mtx,basis.json}\n",
-              load_seconds, basis.build_seconds, peak_memory_bytes() / 1048576.0,
-              options.out.c_str());
+  std::printf("; loaded in %.3f s, built in %.3f s, peak memory %.0f MB\n", load_seconds,
+              basis.build_seconds, peak_memory_bytes() / 1048576.0);
+  output.announce("wrote " + options.out + "/{K.mtx,M.mtx,T.mtx,basis.json}\n");
   return 0;
 }
 

@@ -197,8 +197,8 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
   }
   write_text_file(stage + "/convergence.csv", stream_text(csv));
   write_text_file(stage + "/rubbing.json", rubbing_json(model));
-  std::printf("wrote %s/convergence.csv and %s/runs/*/{history.csv,summary.json}\n",
-              options.out.c_str(), options.out.c_str());
+  output.announce("wrote " + options.out + "/convergence.csv and " + options.out +
+                  "/runs/*/{history.csv,summary.json}\n");
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const RubbingCampaignRun& r) { return r.error.empty(); });
   if (options.report) {
@@ -212,7 +212,7 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
                    RSI_REPORTS_DIR, status, options.out.c_str());
       return 1;
     }
-    std::printf("report: %s/report.md\n", options.out.c_str());
+    output.announce("report: " + options.out + "/report.md\n");
   }
   if (all_ok) return 0;
   // Exit 3: one error line (issue 13, class 8), each failed run on its own line.

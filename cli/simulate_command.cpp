@@ -174,8 +174,8 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
   std::printf("blade 1 contact intervals:");
   for (const auto& [a, b] : s.contact_intervals_blade_1)
     std::printf(" [%.4f, %.4f] ms", 1e3 * a, 1e3 * b);
-  std::printf("\nwrote %s/history.csv, %s/summary.json\n", options.out.c_str(),
-              options.out.c_str());
+  std::printf("\n");
+  output.announce("wrote " + options.out + "/history.csv, " + options.out + "/summary.json\n");
   if (s.completed) return 0;
   // Exit 3 always says why on stderr, not only in the summary lines above.
   std::fprintf(stderr,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <set>
 #include <stdexcept>
@@ -99,6 +101,13 @@ void remove_empty_folders(const fs::path& root) {
 
 } // namespace
 
+StagedOutput::AbandonOnThrow::AbandonOnThrow(StagedOutput& output)
+    : m_output(output), m_exceptions(std::uncaught_exceptions()) {}
+
+StagedOutput::AbandonOnThrow::~AbandonOnThrow() {
+  if (std::uncaught_exceptions() > m_exceptions) m_output.abandon();
+}
+
 StagedOutput::~StagedOutput() {
   abandon();
 }
@@ -172,6 +181,18 @@ void StagedOutput::publish() {
       if (fs::is_empty(out / parent, error)) fs::remove(out / parent, error);
   m_lock.reset();
   m_directories.remove_empty();
+  for (const std::string& line : m_announced)
+    std::fputs(line.c_str(), stdout);
+  m_announced.clear();
+  std::fflush(stdout);
+}
+
+void StagedOutput::announce(const std::string& line) {
+  if (m_staging.empty()) {
+    std::fputs(line.c_str(), stdout);
+    return;
+  }
+  m_announced.push_back(line);
 }
 
 void StagedOutput::abandon() noexcept {
@@ -185,19 +206,22 @@ void StagedOutput::abandon() noexcept {
     try {
       std::error_code error;
       fs::remove_all(m_staging, error);
+      m_abandoned = m_staging;
     } catch (...) {
     }
     m_staging.clear();
   }
+  m_announced.clear();
   m_lock.reset();
   m_directories.remove_empty();
 }
 
 std::string StagedOutput::shown(const std::string& message) const {
-  if (m_staging.empty()) return message;
+  const std::string& staging = m_staging.empty() ? m_abandoned : m_staging;
+  if (staging.empty()) return message;
   std::string text = message;
-  for (size_t at = 0; (at = text.find(m_staging, at)) != std::string::npos; at += m_out.size())
-    text.replace(at, m_staging.size(), m_out);
+  for (size_t at = 0; (at = text.find(staging, at)) != std::string::npos; at += m_out.size())
+    text.replace(at, staging.size(), m_out);
   return text;
 }
 

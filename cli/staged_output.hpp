@@ -24,6 +24,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "output_files.hpp"
 #include "output_lock.hpp"
@@ -33,6 +34,21 @@ namespace rsi {
 
 class StagedOutput {
 public:
+  /// Abandons `output` when it is destroyed during the unwinding of an
+  /// exception (a scope guard): for a command that must clean --out before
+  /// something else its unwinding does (MPI_Finalize, mpi_session.hpp).
+  class AbandonOnThrow {
+  public:
+    explicit AbandonOnThrow(StagedOutput& output);
+    ~AbandonOnThrow();
+    AbandonOnThrow(const AbandonOnThrow&) = delete;
+    AbandonOnThrow& operator=(const AbandonOnThrow&) = delete;
+
+  private:
+    StagedOutput& m_output;
+    int m_exceptions; ///< std::uncaught_exceptions() at construction
+  };
+
   StagedOutput() = default;
   /// Abandons an unpublished output (see abandon).
   ~StagedOutput();
@@ -56,6 +72,10 @@ public:
   /// directories open created that are empty: --out as it was. Never throws
   /// (it runs during unwinding).
   void abandon() noexcept;
+  /// Prints `line` (a "wrote DIR/..." line, with its newline) on stdout
+  /// once the set is published, never if it is abandoned: no line claims a
+  /// file that is not there. Printed at once when nothing is staged.
+  void announce(const std::string& line);
   /// `message` with the staging folder named as the --out path the user
   /// gave (the staging folder is removed before the message is read);
   /// `message` itself when nothing is staged.
@@ -67,7 +87,9 @@ private:
   std::string m_out;
   std::string m_option;
   std::string m_staging; ///< empty: not open, or already published or abandoned
+  std::string m_abandoned; ///< the staging folder abandon() removed, for shown()
   OutputSet m_set;
+  std::vector<std::string> m_announced; ///< lines printed by publish()
 };
 
 } // namespace rsi

@@ -32,14 +32,15 @@ namespace {
 /// The MPI session as the sweep driver sees its ranks.
 class MpiRanks : public SweepRanks {
 public:
-  explicit MpiRanks(const MpiSession& mpi) : m_mpi(mpi) {}
+  explicit MpiRanks(MpiSession& mpi) : m_mpi(mpi) {}
   int rank() const override { return m_mpi.rank(); }
   int size() const override { return m_mpi.size(); }
   void send_task(int task, double seconds, const std::string& text) const override {
     m_mpi.send_task(task, seconds, text);
   }
   void send_done() const override { m_mpi.send_done(); }
-  void send_fatal(const std::string& what) const override { m_mpi.send_fatal(what); }
+  /// Ends this rank with status 0 once rank 0 knows (MpiSession::end_reported).
+  void send_fatal(const std::string& what) const override { m_mpi.end_reported(what); }
   bool poll(SweepMessage& message) const override {
     RankMessage m;
     if (!m_mpi.poll(m)) return false;
@@ -54,7 +55,7 @@ public:
   }
 
 private:
-  const MpiSession& m_mpi;
+  MpiSession& m_mpi;
 };
 
 /// The case's sweep, checked: the one place that reads which kind of case
@@ -83,6 +84,10 @@ double median(std::vector<double> x) {
 
 int run_sweep(const SweepOptions& options, StagedOutput& output) {
   MpiSession mpi;
+  // Declared after `mpi`: an error or a signal removes the staged output
+  // before MPI_Finalize, which waits for the other ranks (mpirun kills a
+  // rank that waits too long: nothing of its --out must be left then).
+  const StagedOutput::AbandonOnThrow abandon_before_finalize(output);
   const Clock::time_point start = Clock::now();
   const int jobs = options.jobs == 0 ? (mpi.size() > 1 ? 1 : 2) : options.jobs;
   if (jobs < 1 || jobs > 64)
@@ -141,8 +146,8 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
               seconds_since(start));
   for (const std::string& f : outcome.failures)
     std::fprintf(stderr, "rsi: sweep: failed: %s\n", f.c_str());
-  std::printf("wrote %s/sweep.csv, %s/interaction_lines.csv, %s/sweep_summary.json\n",
-              options.out.c_str(), options.out.c_str(), options.out.c_str());
+  output.announce("wrote " + options.out + "/sweep.csv, " + options.out + "/interaction_lines.csv, " +
+                  options.out + "/sweep_summary.json\n");
   if (options.report) {
     std::fflush(stdout);
     const std::string script = points->report_script();
@@ -154,7 +159,7 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
                    RSI_REPORTS_DIR, script.c_str(), status, options.out.c_str());
       return 1;
     }
-    std::printf("report: %s/sweep_report.md\n", options.out.c_str());
+    output.announce("report: " + options.out + "/sweep_report.md\n");
   }
   if (!outcome.failures.empty()) {
     std::fprintf(stderr,

@@ -134,7 +134,8 @@ SweepOutcome drive_sweep(const SweepPoints& points, const SweepRanks& ranks,
       } else if (m.kind == SweepMessage::Kind::fatal) {
         ++ranks_done;
         // The rank's tasks that never came are failed rows: the sweep goes on.
-        for (int t = 0; t < n_tasks; ++t)
+        // (A row before `written` came and was written: not lost.)
+        for (int t = written; t < n_tasks; ++t)
           if (owner[static_cast<size_t>(t)] == m.rank && !rows[static_cast<size_t>(t)]) {
             SweepTaskResult lost;
             lost.task = t;

@@ -36,6 +36,8 @@ public:
   /// To rank 0, from another rank.
   virtual void send_task(int task, double seconds, const std::string& text) const = 0;
   virtual void send_done() const = 0;
+  /// From a rank other than 0 that cannot go on: tells rank 0, and may end
+  /// the process (MPI: status 0, so that mpirun lets rank 0 publish).
   virtual void send_fatal(const std::string& what) const = 0;
   /// Rank 0: the next message that has arrived, without waiting.
   virtual bool poll(SweepMessage& message) const = 0;

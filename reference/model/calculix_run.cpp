@@ -1,5 +1,6 @@
 #include "calculix_run.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include "child_process.hpp"
 #include "component.hpp"
 #include "coordinate_entries.hpp"
+#include "interruption_flag.hpp"
 #include "stream_text.hpp"
 
 namespace rsi {
@@ -72,14 +74,63 @@ std::string error_lines(const fs::path& log) {
   return out.empty() ? " (no *ERROR line in " + log.string() + ")" : out;
 }
 
+/// The last line of `path` without its newline; empty when the file does
+/// not end with a newline (cut short) or cannot be read.
+std::string last_complete_line(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return "";
+  const std::streamoff size = in.tellg();
+  const std::streamoff tail = std::min<std::streamoff>(size, 4096);
+  std::string text(static_cast<size_t>(tail), '\0');
+  in.seekg(size - tail);
+  in.read(text.data(), tail);
+  if (!in || text.empty() || text.back() != '\n') return "";
+  text.pop_back();
+  return text.substr(text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1);
+}
+
+/// Why the matrices ccx wrote in `dir` are incomplete, or "" when they are
+/// whole. ccx 2.20 exits 0 when a write fails (a full disk: its Fortran and
+/// C writes are not checked), leaving a .sti, .mas or .dof cut short or
+/// empty. A whole set: JOB.dof lists n dofs, and JOB.sti and JOB.mas (the
+/// upper triangle column by column) end with a newline and the entry
+/// "n n value", the last column's diagonal. (Their sizes may differ: a
+/// value of three exponent digits, 1e-300, makes a longer line.)
+std::string incomplete_matrices(const fs::path& dir) {
+  long n = 0;
+  {
+    std::ifstream in(dir / "job.dof");
+    std::string line;
+    while (std::getline(in, line))
+      if (line.find_first_not_of(" \t\r") != std::string::npos) ++n;
+  }
+  if (n == 0) return "job.dof lists no dof";
+  for (const char* name : {"job.sti", "job.mas"}) {
+    std::istringstream last(last_complete_line(dir / name));
+    long row = 0, col = 0;
+    double value = 0.0;
+    if (!(last >> row >> col >> value) || row != n || col != n)
+      return std::string(name) + " does not end with the diagonal entry of dof " +
+             std::to_string(n) + " (job.dof's last), as a whole file does";
+  }
+  return "";
+}
+
 /// The cache entry for the model of `deck` followed by `step`: ccx run there
-/// unless it already exists. Returns the entry folder.
+/// unless it already exists (and is whole: `incomplete`, when given, says
+/// why an entry is not; such an entry, cut short after it was made, is run
+/// again). Returns the entry folder.
 fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std::string& tag,
-                    const std::vector<std::string>& outputs, const std::string& cache_dir) {
+                    const std::vector<std::string>& outputs, const std::string& cache_dir,
+                    std::string (*incomplete)(const fs::path&) = nullptr) {
   const std::string text = deck.model_text + step;
   const fs::path entry = fs::path(cache_dir) / (fs::path(deck.path).stem().string() + "-" +
                                                 hex(fnv1a(text)) + "-" + tag);
-  if (fs::is_directory(entry)) return entry;
+  if (fs::is_directory(entry)) {
+    if (incomplete == nullptr || incomplete(entry).empty()) return entry;
+    std::error_code ec;
+    fs::remove_all(entry, ec);
+  }
   const std::string ccx = find_ccx();
   std::error_code ec;
   fs::create_directories(cache_dir, ec);
@@ -98,7 +149,30 @@ fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std
       throw ImportError("--ccx-cache: cannot write " + (work / "job.inp").string());
     }
   }
-  const int status = run_ccx(ccx, work);
+  int status = 0;
+  try {
+    status = run_ccx(ccx, work);
+  } catch (const Interrupted&) {
+    // Stopped by a signal (forwarded to ccx): no model, no entry.
+    fs::remove_all(work, ec);
+    throw;
+  }
+  // ccx exits 0 after a failed write (a full disk) as after a whole run:
+  // without an *ERROR line in its log, files cut short are the disk's doing.
+  const bool ccx_error = error_lines(work / "ccx.log").rfind(" (no *ERROR line", 0) != 0;
+  if (status == 0 && !ccx_error && incomplete != nullptr) {
+    const std::string why = incomplete(work);
+    if (!why.empty()) {
+      // Not the model's fault, and no entry: the next run tries again.
+      const fs::space_info space = fs::space(cache_dir, ec);
+      fs::remove_all(work, ec);
+      throw ImportError("ccx's output for " + deck.path + " is cut short (" + why +
+                        ") though ccx reported success: a write failed, the disk holding "
+                        "--ccx-cache " + cache_dir + " may be full (" +
+                        std::to_string(ec ? 0 : space.available / 1048576) +
+                        " MB free now); nothing was cached: free space and run again");
+    }
+  }
   bool complete = status == 0;
   for (const std::string& name : outputs)
     complete = complete && fs::exists(work / name) && fs::file_size(work / name) > 0;
@@ -131,8 +205,8 @@ std::string find_ccx() {
 
 std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir) {
   const std::string step = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
-  const fs::path entry =
-      cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"}, cache_dir);
+  const fs::path entry = cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"},
+                                   cache_dir, incomplete_matrices);
   return (entry / "job").string();
 }
 

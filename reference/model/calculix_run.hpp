@@ -5,7 +5,12 @@
 // hash (64-bit FNV-1a) covers the model text and the step, so an edited deck
 // or an included mesh runs again; a finished entry is reused. ccx runs in a
 // temporary folder renamed into place only when it succeeded, so a failed or
-// interrupted run leaves no entry.
+// interrupted run leaves no entry (a signal is forwarded to ccx:
+// child_process.hpp). ccx exits 0 when its writes fail (a full disk), so
+// the matrices are checked whole before they are cached, and again when a
+// cached entry is found (one cut since is run again): JOB.dof lists n dofs,
+// JOB.sti and JOB.mas end with the entry "n n value".
+// Cut files are refused (ImportError: the disk may be full, nothing cached).
 
 #include <string>
 #include <vector>

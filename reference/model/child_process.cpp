@@ -1,6 +1,10 @@
 #include "child_process.hpp"
+#include "interruption_flag.hpp"
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <thread>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
@@ -71,9 +75,22 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::string& w
   if (rc == 0) rc = posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   if (rc == 0)
     rc = posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  // Its own process group (see the header), and SIGINT/SIGTERM at their
+  // default action whatever rsi's disposition.
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  sigset_t defaults;
+  sigemptyset(&defaults);
+  sigaddset(&defaults, SIGINT);
+  sigaddset(&defaults, SIGTERM);
+  if (rc == 0) rc = posix_spawnattr_setpgroup(&attributes, 0);
+  if (rc == 0) rc = posix_spawnattr_setsigdefault(&attributes, &defaults);
+  if (rc == 0)
+    rc = posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF);
   pid_t pid = 0;
-  if (rc == 0) rc = posix_spawnp(&pid, pointers[0], &actions, nullptr, pointers.data(), environ);
+  if (rc == 0) rc = posix_spawnp(&pid, pointers[0], &actions, &attributes, pointers.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   if (rc != 0) {
     result.error = std::string("cannot start '") + argv[0] + "': " + std::strerror(rc);
     return result;
@@ -81,9 +98,29 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::string& w
   result.started = true;
   int status = 0;
   pid_t waited = 0;
-  do
-    waited = waitpid(pid, &status, 0);
-  while (waited < 0 && errno == EINTR);
+  int forwarded = 0; // the signal sent to the child's group, 0 if none
+  std::chrono::steady_clock::time_point sent;
+  for (;;) {
+    waited = waitpid(pid, &status, WNOHANG);
+    if (waited < 0 && errno == EINTR) continue;
+    if (waited != 0) break;
+    const int signal = pending_interruption();
+    if (signal != 0 && forwarded == 0) {
+      forwarded = signal;
+      sent = std::chrono::steady_clock::now();
+      kill(-pid, signal);
+    } else if (forwarded != 0 && forwarded != SIGKILL &&
+               std::chrono::steady_clock::now() - sent > std::chrono::seconds(5)) {
+      forwarded = SIGKILL; // the child ignores the signal: stopped all the same
+      kill(-pid, SIGKILL);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (forwarded != 0 && waited == pid) {
+    // What the child's group started may outlive it: the group goes too.
+    kill(-pid, SIGKILL);
+    throw_if_interrupted();
+  }
   if (waited != pid) {
     result.error = std::string("waitpid failed: ") + std::strerror(errno);
   } else if (WIFEXITED(status)) {

@@ -1,4 +1,5 @@
 #include "component_case.hpp"
+#include "interruption_flag.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -162,6 +163,10 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
     const std::string prefix = "write_gmsh_blade_deck: ";
     if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
     throw ImportError(case_path + ": key 'component.source.gmsh_blade': " + one_line(what));
+  } catch (const Interrupted&) {
+    // Stopped by a signal (forwarded to gmsh): no deck, no entry.
+    std::filesystem::remove_all(work, ec);
+    throw;
   } catch (const std::runtime_error& e) {
     std::filesystem::remove_all(work, ec);
     throw ImportError(std::string("--ccx-cache: ") + e.what());

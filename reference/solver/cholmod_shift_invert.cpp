@@ -1,4 +1,5 @@
 #include "cholmod_shift_invert.hpp"
+#include "interruption_flag.hpp"
 
 #include <stdexcept>
 
@@ -53,6 +54,7 @@ void CholmodShiftInvert::perform_op(const double* x_in, double* y_out) const {
 
 bool CholmodShiftInvert::solve(const Eigen::Ref<const Eigen::MatrixXd>& b,
                                Eigen::Ref<Eigen::MatrixXd> x) const {
+  throw_if_interrupted(); // every block step of the block method solves here
   m_n_solves += b.cols();
   return m_factor.solve(CholmodFactor::System::a, b, x);
 }

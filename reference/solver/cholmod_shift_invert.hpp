@@ -17,6 +17,8 @@
 // perform_op() on a failed factor, or a failed CHOLMOD solve, throws
 // std::runtime_error (Spectra cannot take a status from it). solve()
 // returns false instead. n_solves() counts the right-hand sides solved.
+// Both poll the interruption flag first (interruption_flag.hpp) and throw
+// Interrupted when a signal was recorded.
 
 #include <string>
 

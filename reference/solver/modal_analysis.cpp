@@ -20,6 +20,7 @@
 #include "cholmod_factor.hpp"
 #include "cholmod_shift_invert.hpp"
 #include "energy_resolution.hpp"
+#include "interruption_flag.hpp"
 #include "modal_check.hpp"
 #include "stored_digits.hpp"
 #include "symmetric_inertia.hpp"
@@ -226,6 +227,25 @@ Modes checked_dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
 
 /// M = P^T L L^T P by CHOLMOD (supernodal), for Spectra's Cholesky mode:
 /// lower_triangular_solve y = L^-1 P x, upper_triangular_solve y = P^T L^-T x.
+/// Spectra's sparse product y = A x, polling the interruption flag before
+/// each product: every Lanczos step makes one, so a SIGINT or SIGTERM stops
+/// an eigensolve within one step (one solve with the factor and one
+/// product) rather than after its restarts.
+class PolledMatProd {
+public:
+  using Scalar = double;
+  explicit PolledMatProd(const Eigen::SparseMatrix<double>& a) : m_product(a) {}
+  Eigen::Index rows() const { return m_product.rows(); }
+  Eigen::Index cols() const { return m_product.cols(); }
+  void perform_op(const double* x_in, double* y_out) const {
+    throw_if_interrupted();
+    m_product.perform_op(x_in, y_out);
+  }
+
+private:
+  Spectra::SparseSymMatProd<double> m_product;
+};
+
 class CholmodCholesky {
 public:
   using Scalar = double;
@@ -267,7 +287,7 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
     why = bop.message();
     return std::numeric_limits<double>::infinity();
   }
-  Spectra::SparseSymMatProd<double> op(stiffness);
+  PolledMatProd op(stiffness);
   const int n = static_cast<int>(stiffness.rows());
   // A cyclic model's largest eigenvalue sits in a cluster of n_sectors
   // nearly equal ones (22 identical blade tips vibrating alone); with 30
@@ -278,7 +298,7 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
   // restarts: a stalled one costs minutes), so models that converged before
   // get the same value, and a retried one the same to the tolerance.
   for (const auto& [ncv, restarts] : {std::pair<int, int>{30, 1000}, {128, 10000}}) {
-    Spectra::SymGEigsSolver<Spectra::SparseSymMatProd<double>, CholmodCholesky,
+    Spectra::SymGEigsSolver<PolledMatProd, CholmodCholesky,
                             Spectra::GEigsMode::Cholesky>
         solver(op, bop, 1, std::min(n, ncv));
     solver.init();
@@ -408,7 +428,7 @@ template <class ShiftInvert, class OnFailure>
 bool lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& scaled_mass, double scale,
                    double sigma, int count, Modes& modes, const OnFailure& factorization_failed) {
   const int n = static_cast<int>(scaled_mass.rows());
-  using MassProduct = Spectra::SparseSymMatProd<double>;
+  using MassProduct = PolledMatProd;
   MassProduct bop(scaled_mass);
   const int ncv = std::min(n, std::max(2 * count + 1, count + 20));
   Eigen::VectorXd values;

@@ -1,0 +1,157 @@
+#!/usr/bin/env bash
+# `rsi sweep` under mpirun when a rank is stopped, or mpirun itself: rank 0
+# publishes what it has or leaves --out clean, within 60 s, and says so in
+# one `rsi: error:` line. A sweep of 6 speeds of the paper's case (full
+# runs of 0.05 s, about 2 s each) on 2 ranks, --out created by the run:
+#  - SIGTERM to rank 1 alone (its run polls the signal, rank 1 reports the
+#    interruption to rank 0 and ends): rank 0 writes its own rows and a
+#    failed row for each of rank 1's runs that never came, publishes, and
+#    mpirun exits non-zero (3 or 143); sweep.csv holds the 6 rows, the
+#    summary names rank 1 as stopped. Before: rank 0 counted a row rank 1
+#    had sent and it had written as lost too, waited for a 7th of 6 rows
+#    forever (a hang; mpirun killed here after 60 s).
+#  - SIGKILL to rank 1 (no word from it): mpirun ends the job, rank 0 gets
+#    SIGTERM: --out is removed (no lock, no staging folder), exit non-zero.
+#    Before: rank 0 waited in MPI_Finalize before removing its staging
+#    folder, mpirun's SIGKILL came first: --out held .rsi-lock and
+#    .rsi-stage-PID.
+#  - Ctrl-C to mpirun (SIGINT to its process group, setsid here): the
+#    same, nothing left.
+# Skipped (exit 77, said) without mpirun or setsid. About 40 s in Release.
+# Usage: sweep_mpi_interrupted.sh RSI SOURCE_DIR
+set -u
+rsi=$1
+src=$2
+for tool in mpirun setsid; do
+  if ! command -v "$tool" >/dev/null; then
+    echo "skipped: $tool is not on PATH (Debian packages openmpi-bin, util-linux)"
+    exit 77
+  fi
+done
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+export ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0
+work=$(mktemp -d)
+mpirun_pid=""
+cleanup() {
+  [ -n "$mpirun_pid" ] && kill -KILL -- "-$mpirun_pid" 2>/dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+failures=0
+fail() {
+  echo "FAIL $*"
+  failures=$((failures + 1))
+}
+/usr/bin/python3 - "$src/data/cases/batailly2007.json" "$work/case.json" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))
+c.pop("campaign", None)
+c["sweep"] = {"speeds": [250, 280, 310, 340, 370, 400], "duration": 0.05, "transient": 0.004,
+              "damping": {"rayleigh": {"alpha": 30, "beta": 0}, "projected_rayleigh": True},
+              "runs": [{"method": "full"}]}
+json.dump(c, open(sys.argv[2], "w"))
+PY
+now_ms() { echo $(($(date +%s%N) / 1000000)); }
+
+# The pid of rank RANK among mpirun's children (OMPI_COMM_WORLD_RANK).
+rank_pid() {
+  local p
+  for p in $(pgrep -P "$mpirun_pid"); do
+    if tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx "OMPI_COMM_WORLD_RANK=$1"; then
+      echo "$p"
+      return
+    fi
+  done
+}
+
+# NAME WHAT: starts the sweep (its own session), waits until both ranks
+# have a row done (rank 0 says 2 runs done), then WHAT: rank1-TERM,
+# rank1-KILL or mpirun-INT; waits up to 60 s.
+stop_sweep() {
+  local name=$1 what=$2 out=$work/out-$1
+  setsid mpirun -n 2 "$rsi" sweep "$work/case.json" --no-report --out "$out" \
+    >"$work/$name.log" 2>"$work/$name.err" &
+  mpirun_pid=$!
+  for _ in $(seq 1 1200); do # up to 120 s (the first runs, a loaded machine)
+    grep -qE 'sweep: [2-9]/6 runs done' "$work/$name.err" && break
+    kill -0 "$mpirun_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  local r1
+  r1=$(rank_pid 1)
+  if [ -z "$r1" ] || ! grep -qE 'sweep: [2-9]/6 runs done' "$work/$name.err"; then
+    fail "$name: the sweep did not reach 2 runs with rank 1 running: $(tail -n 3 "$work/$name.err")"
+    kill -KILL -- "-$mpirun_pid" 2>/dev/null
+    wait "$mpirun_pid" 2>/dev/null
+    mpirun_pid=""
+    return 1
+  fi
+  local before
+  before=$(now_ms)
+  case $what in
+  rank1-TERM) kill -TERM "$r1" ;;
+  rank1-KILL) kill -KILL "$r1" ;;
+  mpirun-INT) kill -INT -- "-$mpirun_pid" ;;
+  esac
+  local ended=0
+  for _ in $(seq 1 600); do
+    kill -0 "$mpirun_pid" 2>/dev/null || { ended=1; break; }
+    sleep 0.1
+  done
+  if [ "$ended" -eq 0 ]; then
+    fail "$name: mpirun still runs 60 s after $what"
+    kill -KILL -- "-$mpirun_pid" 2>/dev/null
+    wait "$mpirun_pid" 2>/dev/null
+    mpirun_pid=""
+    return 1
+  fi
+  wait "$mpirun_pid"
+  status=$?
+  mpirun_pid=""
+  ms=$(($(now_ms) - before))
+  hidden=$(find "$out" -name '.rsi-*' 2>/dev/null | head -n 3)
+  errors=$(grep -c '^rsi: error:' "$work/$name.err")
+  return 0
+}
+
+if stop_sweep rank-term rank1-TERM; then
+  rows=$(($(grep -c . "$work/out-rank-term/sweep.csv" 2>/dev/null || echo 1) - 1))
+  if [ "$status" -eq 0 ]; then
+    fail "rank-term: mpirun exited 0 after SIGTERM to rank 1"
+  elif [ -n "$hidden" ]; then
+    fail "rank-term: left $hidden"
+  elif [ "$rows" -ne 6 ]; then
+    fail "rank-term: sweep.csv has $rows rows, 6 expected (rank 0's and rank 1's lost ones failed)"
+  elif ! grep -q 'rank 1 stopped: interrupted by SIGTERM' "$work/out-rank-term/sweep_summary.json"; then
+    fail "rank-term: the summary does not say rank 1 was stopped by SIGTERM"
+  elif [ "$errors" -ne 1 ]; then
+    fail "rank-term: $errors 'rsi: error:' lines: $(grep '^rsi: error:' "$work/rank-term.err")"
+  elif ! grep -q "^wrote $work/out-rank-term/sweep.csv" "$work/rank-term.log"; then
+    fail "rank-term: no 'wrote' line for the published sweep.csv"
+  else
+    echo "ok   rank-term: mpirun exit $status $ms ms after SIGTERM to rank 1, $rows rows ($(grep -c ',failed,' "$work/out-rank-term/sweep.csv") failed), $(grep '^rsi: error:' "$work/rank-term.err" | head -c 90)..."
+  fi
+fi
+
+for stop in rank1-KILL mpirun-INT; do
+  name=${stop,,}
+  if stop_sweep "$name" "$stop"; then
+    if [ "$status" -eq 0 ]; then
+      fail "$name: mpirun exited 0 after $stop"
+    elif [ -e "$work/out-$name" ]; then
+      fail "$name: --out left behind: $(ls -A "$work/out-$name" | tr '\n' ' ')"
+    elif [ "$errors" -ne 1 ]; then
+      fail "$name: $errors 'rsi: error:' lines: $(grep '^rsi: error:' "$work/$name.err")"
+    elif grep -q '^wrote ' "$work/$name.log"; then
+      fail "$name: a 'wrote' line for files that are not there: $(grep '^wrote ' "$work/$name.log")"
+    else
+      echo "ok   $name: mpirun exit $status $ms ms after $stop, no --out, no lock, no staging folder; $(grep '^rsi: error:' "$work/$name.err" | head -c 90)"
+    fi
+  fi
+done
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+echo "sweep_mpi_interrupted: a stopped rank or mpirun leaves rank 0's rows or a clean --out"
