@@ -5,7 +5,9 @@
 # `rsi: error: interrupted by SIGTERM` line within seconds; no "wrote"
 # line, no --out, no cache entry (neither whole, ".failed" nor ".tmpPID").
 #  - gmsh meshing the blade of data/cases/blade3d.json at element_size 2
-#    (87,282 dofs, tens of seconds of gmsh) on a cold cache. Before: rsi
+#    on a cold cache, with a stand-in gmsh on PATH that meshes forever (the
+#    real one takes under 3 s on an idle machine, tens of seconds under
+#    load: too short to be sure of a signal while it runs). Before: rsi
 #    waited for gmsh to finish, then started ccx on the mesh, and exited
 #    143 only when ccx was done.
 #  - ccx writing Rotor 37's matrices (data/cases/rotor37.json, 61,098
@@ -145,7 +147,10 @@ interrupt() {
   fi
 }
 
-interrupt gmsh 20000 child:gmsh "$work/cold-gmsh" "$rsi" modes "$work/fine.json" --count 1
+mkdir -p "$work/bin"
+printf '#!/bin/bash\n# A gmsh that never finishes meshing.\nwhile :; do sleep 0.1; done\n' >"$work/bin/gmsh"
+chmod +x "$work/bin/gmsh"
+interrupt gmsh 20000 child:gmsh "$work/cold-gmsh" env PATH="$work/bin:$PATH" "$rsi" modes "$work/fine.json" --count 1
 interrupt ccx 20000 child:ccx "$work/cold-ccx" "$rsi" modes "$work/rotor37.json" --count 1
 # The eigensolve: Rotor 37's matrices in the shared cache first (not timed).
 "$rsi" modes "$work/rotor37.json" --count 1 --ccx-cache "$cache" --out "$work/warm" >/dev/null 2>&1 ||
