@@ -6,6 +6,8 @@
 
 #include <cholmod.h>
 
+#include "cholmod_handles.hpp"
+
 namespace rsi {
 
 struct CholmodFactor::Cholmod {
@@ -18,23 +20,6 @@ struct CholmodFactor::Cholmod {
 };
 
 namespace {
-
-cholmod_sparse view(const Eigen::SparseMatrix<double>& lower) {
-  cholmod_sparse a{};
-  a.nrow = static_cast<size_t>(lower.rows());
-  a.ncol = static_cast<size_t>(lower.cols());
-  a.nzmax = static_cast<size_t>(lower.nonZeros());
-  a.p = const_cast<int*>(lower.outerIndexPtr());
-  a.i = const_cast<int*>(lower.innerIndexPtr());
-  a.x = const_cast<double*>(lower.valuePtr());
-  a.stype = -1; // the lower triangle of a symmetric matrix
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_REAL;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
-  return a;
-}
 
 cholmod_dense view(const Eigen::Ref<const Eigen::MatrixXd>& b) {
   cholmod_dense d{};
@@ -81,7 +66,7 @@ CholmodFactor::Status CholmodFactor::factorize(const Eigen::SparseMatrix<double>
   if (lower.rows() != lower.cols() || !lower.isCompressed())
     throw std::invalid_argument("CholmodFactor: the lower triangle must be square and compressed");
   cholmod_common* c = &m_cholmod->common;
-  cholmod_sparse a = view(lower);
+  cholmod_sparse a = cholmod_lower_view(lower);
   if (m_cholmod->factor == nullptr) {
     m_n = lower.rows();
     m_pattern_nonzeros = lower.nonZeros();

@@ -8,29 +8,11 @@
 #include <cholmod.h>
 #include <lapacke.h>
 
+#include "cholmod_handles.hpp"
+
 namespace rsi {
 
 namespace {
-
-/// cholmod_common and a factor, released on every way out.
-class SimplicialLdlt {
-public:
-  SimplicialLdlt() {
-    cholmod_start(&common);
-    common.print = 0;
-    common.supernodal = CHOLMOD_SIMPLICIAL;
-    common.final_ll = 0; // keep L D L^T
-  }
-  ~SimplicialLdlt() {
-    cholmod_free_factor(&factor, &common);
-    cholmod_finish(&common);
-  }
-  SimplicialLdlt(const SimplicialLdlt&) = delete;
-  SimplicialLdlt& operator=(const SimplicialLdlt&) = delete;
-
-  cholmod_common common;
-  cholmod_factor* factor = nullptr;
-};
 
 void count(double d, Inertia& inertia) {
   if (d < 0.0)
@@ -51,20 +33,11 @@ Inertia sparse_inertia(const Eigen::SparseMatrix<double>& lower) {
     inertia.factorized = true;
     return inertia;
   }
-  SimplicialLdlt c;
-  cholmod_sparse a{};
-  a.nrow = static_cast<size_t>(lower.rows());
-  a.ncol = static_cast<size_t>(lower.cols());
-  a.nzmax = static_cast<size_t>(lower.nonZeros());
-  a.p = const_cast<int*>(lower.outerIndexPtr());
-  a.i = const_cast<int*>(lower.innerIndexPtr());
-  a.x = const_cast<double*>(lower.valuePtr());
-  a.stype = -1; // the lower triangle of a symmetric matrix
-  a.itype = CHOLMOD_INT;
-  a.xtype = CHOLMOD_REAL;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
+  CholmodHandles c;
+  c.common.print = 0;
+  c.common.supernodal = CHOLMOD_SIMPLICIAL;
+  c.common.final_ll = 0; // keep L D L^T
+  cholmod_sparse a = cholmod_lower_view(lower);
   c.factor = cholmod_analyze(&a, &c.common);
   if (c.common.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
   if (c.factor == nullptr) {

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/CholmodSupport>
+#include "cholmod_handles.hpp"
 
 namespace rsi {
 
@@ -19,21 +19,6 @@ namespace {
 const std::string kMassRemedy =
     "; a full-order run needs M positive definite (the paper's case checks it when it loads): "
     "for a component set component.mass to \"lumped\" (HRZ) or run a reduced --method";
-
-/// cholmod_common and a factor, released on every way out of the constructor.
-class CholmodFactor {
-public:
-  CholmodFactor() { cholmod_start(&common); }
-  ~CholmodFactor() {
-    cholmod_free_factor(&factor, &common);
-    cholmod_finish(&common);
-  }
-  CholmodFactor(const CholmodFactor&) = delete;
-  CholmodFactor& operator=(const CholmodFactor&) = delete;
-
-  cholmod_common common;
-  cholmod_factor* factor = nullptr;
-};
 
 /// The level of each column of L (CHOLMOD's simplicial LDL^T, AMD order):
 /// 0 for a column no other precedes (l_jk = 0 for all k < j), else one more
@@ -87,13 +72,12 @@ template <class Key> std::vector<int> sorted_by(int n, Key key) {
 
 MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   const auto n = static_cast<int>(mass.rows());
-  CholmodFactor c;
+  CholmodHandles c;
   c.common.supernodal = CHOLMOD_SIMPLICIAL;
   c.common.final_ll = 0; // keep LDL^T
   Eigen::SparseMatrix<double> lower = mass.triangularView<Eigen::Lower>();
   lower.makeCompressed();
-  cholmod_sparse a = Eigen::viewAsCholmod(lower);
-  a.stype = -1; // the lower triangle of a symmetric matrix
+  cholmod_sparse a = cholmod_lower_view(lower);
   c.factor = cholmod_analyze(&a, &c.common);
   const bool factorized = c.factor != nullptr && cholmod_factorize(&a, c.factor, &c.common);
   // Out of memory is no property of M: thrown as operator new would.

@@ -22,9 +22,11 @@
 #    rubbing run printed and stored 0 s until session 10).
 # Skipped (exit 77) without gmsh or ccx.
 # SANITIZED = 1 (an ASan/UBSan build): the campaign keeps the full
-# reference, CB-10, CCM-10 and MacNeal 10, 20, 50, and every check above on
-# them; CB and CCM with 20 and 50 modes (the same code as with 10, on a
-# larger basis) run in Release only (the whole campaign took 561 s there).
+# reference, CB-10 and MacNeal 10, 20, 50, and every check above on them;
+# CB with 20 and 50 modes (the same code as with 10, on a larger basis) and
+# CCM (the same integrator as CB, with a mass-carrying boundary; its basis
+# on this blade is built under the sanitizers by Blade3dRows) run in Release
+# only (the whole campaign took 561 s there, this subset with CCM-10 294 s).
 # Usage: blade3d_rubbing.sh RSI SOURCE_DIR CCX_CACHE [SANITIZED]
 set -u
 rsi=$1
@@ -42,9 +44,9 @@ trap 'rm -rf "$work"' EXIT
 case_file=$src/data/cases/blade3d-rubbing.json
 if [ "$sanitized" = 1 ]; then
   /usr/bin/python3 "$src/verification/cli/case_variant.py" "$case_file" "$work/blade3d-rubbing.json" \
-    'rubbing.campaign.runs=[{"method": "cb", "modes": [10]}, {"method": "ccm", "modes": [10]}, {"method": "macneal", "modes": [10, 20, 50]}]'
+    'rubbing.campaign.runs=[{"method": "cb", "modes": [10]}, {"method": "macneal", "modes": [10, 20, 50]}]'
   case_file=$work/blade3d-rubbing.json
-  echo "sanitizer build: full, cb-10, ccm-10, macneal-10/20/50 (cb and ccm 20, 50 in Release)"
+  echo "sanitizer build: full, cb-10, macneal-10/20/50 (cb-20, cb-50 and ccm in Release)"
 fi
 "$rsi" campaign "$case_file" --no-report --ccx-cache "$cache" \
   --out "$work/c" || exit 1
@@ -53,7 +55,7 @@ import csv, json, sys
 out, thresholds = sys.argv[1], json.load(open(sys.argv[2]))
 release_only = set()
 if sys.argv[3] == "1":
-    release_only = {(m, n) for m in ("cb", "ccm") for n in (20, 50)}
+    release_only = {("cb", 20), ("cb", 50), ("ccm", 10), ("ccm", 20), ("ccm", 50)}
 eps = 2.0 ** -52
 failures = 0
 def check(ok, what):
