@@ -1,23 +1,23 @@
 #pragma once
-// The full-order reference of a 3D component rubbing on the rigid casing
-// (issue 12 items 5 and 6): CentralDifference (central_difference.hpp) on
-// the component's own K and M, Coulomb friction with stick and slip through
-// RigidSurfaceContact, Rayleigh damping C = alpha M + beta K, zero initial
-// conditions, no other force. Written apart from the reduced component
-// integrator (reduced/component_integrator.hpp): their agreement on the same
-// component is the evidence.
+// The full-order reference of a 3D component rubbing on the rigid casing:
+// the one full-order loop (full_order_run.hpp) on the component's own K and
+// M, Coulomb friction with stick and slip through RigidSurfaceContact,
+// Rayleigh damping C = alpha M + beta K, zero initial conditions, no other
+// force. Written apart from the reduced component integrator
+// (reduced/component_integrator.hpp): their agreement on the same component
+// is the evidence.
 //
-// Monitors, checked every step: the integrator's own (a failed contact
-// solve: IntegrationError, reported as the status with its step); a
-// non-finite gap; and every energy_every steps the balance
-//   |E - E_0 - W_contact + W_damp| <= balance_tolerance * scale,
-// scale the largest of |E_0|, |E|, |W_contact|, W_damp so far (E costs a
-// product with K and one with M). A run that breaks one stops at that step
-// (completed = false, status says which and when); the rows before it are
-// already with the sink. Every step also the runaway test: a contact node
-// whose normal displacement |g_c - g0_c(t)| exceeds its radius has left the
-// small-displacement model (a blow-up the balance may not see: an unstable
-// run's energy grows with the moving casing's work and the balance closes).
+// Monitors, checked every step (RunMonitor with rubbing_monitor.hpp): the
+// integrator's own (a failed contact solve: IntegrationError, reported as
+// the status with its step); the runaway test (a contact node whose normal
+// displacement |g_c - g0_c(t)| exceeds its radius, or a non-finite gap:
+// that step is not counted); and every energy_every steps and at the last
+// the balance in its one form
+//   |E - E_0 - W_ext - W_contact + W_damp| <= balance_tolerance * scale,
+// W_ext = 0 here (no force), scale the largest of |E|, |W_ext|,
+// |W_contact|, W_damp at the checks (E costs a product with K and one with
+// M). A run that breaks one stops at that step (completed = false, status
+// says which and when); the rows before it are already with the sink.
 
 #include <cstdint>
 #include <functional>

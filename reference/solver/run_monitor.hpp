@@ -1,11 +1,15 @@
 #pragma once
 // Bookkeeping of a contact run, shared by the reference and the reduced
-// solvers (it is neither integrator nor contact code): the stability guard,
-// the summary's maxima over every step, the blade-1 contact intervals, the
-// history rows, the energy balance and the blow-up tests.
+// solvers and by every kind of problem (it is neither integrator nor
+// contact code): the stability guard, the summary's maxima over every step,
+// the history rows, the energy balance and the blow-up tests; the kind's
+// own tests plugged in (KindMonitor).
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
+#include <memory>
+#include <string>
 #include <stdexcept>
 
 #include <Eigen/Core>
@@ -100,21 +104,72 @@ void check_time_step_bound(double dt, const Eigen::SparseMatrix<double>& stiffne
                            const Eigen::SparseMatrix<double>& mass, bool force,
                            const std::string& part);
 
+/// What one kind of problem watches beyond the common bookkeeping, plugged
+/// into RunMonitor (the paper's: paper_monitor.hpp; a component's on the
+/// rigid casing: rubbing_monitor.hpp).
+class KindMonitor {
+public:
+  virtual ~KindMonitor() = default;
+  /// How a step ran away from the model, if it did.
+  struct Runaway {
+    std::string status; ///< empty: no runaway
+    /// true: the step is counted in the summary and a row is written at it
+    /// before the run stops; false: the step is outside the model, neither.
+    bool counted = true;
+  };
+  /// Every step, before it is counted.
+  virtual Runaway runaway(const StepState& state) const = 0;
+  /// Every counted step; `first_contact`: the first step with a contact.
+  virtual void after_step(const StepReport& report, const StepState& state, bool first_contact,
+                          RunResult& result) = 0;
+  /// Whether after_step() reads StepState::casing for this report.
+  virtual bool needs_casing(const StepReport& report, const RunSummary& summary) const = 0;
+};
+
+/// When the common bookkeeping writes rows and checks the energy.
+struct MonitorRules {
+  int steps_requested = 0;        ///< the run's length
+  std::int64_t output_every = 1;  ///< a row every this many steps (>= 1)
+  std::int64_t energy_every = 1;  ///< the balance checked every this many steps (>= 1) and at the last
+  bool row_at_last_step = true; ///< a row at the last step even off the output steps
+  /// Stop when |E - E_0 - W_ext - W_contact + W_damp| > tolerance x scale
+  /// (0: never, the balance is only reported).
+  double balance_tolerance = 0.0;
+};
+
+/// The bookkeeping of a contact run, common to every kind of problem and
+/// to both solvers: the summary's maxima over every step, the history rows,
+/// the energy balance in its one form
+///   E_n - E_0 - W_ext - W_contact + W_damp = 0 (to round-off),
+/// with scale = max over the checked steps of |E|, |W_ext|, |W_contact|,
+/// W_damp (a kind without forcing has W_ext = 0 exactly), the non-finite
+/// energy and the blow-up factor (E > factor x (E_0 + max |W_ext|), checked
+/// only when that supply is positive); what one kind adds (its runaway
+/// test, the paper's blade-1 intervals and casing at the first contact)
+/// comes from a KindMonitor.
 class RunMonitor {
 public:
+  /// The paper's kind (paper_monitor.hpp) with the case's rules: rows every
+  /// time.output_every steps and at the last, no balance tolerance.
   /// `casing` and `result` must outlive the monitor (not owned).
   RunMonitor(const Case& c, const Casing& casing, const RunOptions& options, RunResult& result);
+  /// Any kind. `options` and `result` must outlive the monitor (not owned).
+  RunMonitor(const MonitorRules& rules, std::unique_ptr<KindMonitor> kind,
+             const RunOptions& options, RunResult& result);
 
   /// The row at t = 0.
   void start(const StepState& state, double initial_energy);
-  /// Accumulates one step; `energy` is called on output steps only (it
-  /// costs a product with M). Returns false when the run must stop.
+  /// Accumulates one step; `energy` is called on rows and balance checks
+  /// only (it costs a product with M). Returns false when the run must stop.
   bool after_step(const StepReport& report, const StepState& state,
                   const std::function<double()>& energy);
+  /// Stops the run with `status` (a solver's failure the run reports).
+  void stop_with(const std::string& status) { stop(status); }
   /// Whether after_step() will read StepState::casing for this report (the
-  /// first step with a contact), so a solver need not gather it otherwise.
+  /// first step with a contact, the paper's kind), so a solver need not
+  /// gather it otherwise.
   bool needs_casing(const StepReport& report) const {
-    return m_result.summary.first_contact_step < 0 && report.n_active > 0;
+    return m_kind->needs_casing(report, m_result.summary);
   }
   /// Closes the summary: the two clocks as measured by the run, from which
   /// the time spent in the history sink is taken out (RunSummary::output_seconds).
@@ -126,13 +181,11 @@ private:
   void add_row(const StepState& state, double energy);
   bool stop(const std::string& status);
 
-  const Casing& m_casing;
+  MonitorRules m_rules;
+  std::unique_ptr<KindMonitor> m_kind;
   const RunOptions& m_options;
   RunResult& m_result;
-  int m_output_every;
-  double m_runaway_gap;
   double m_largest_external_work = 0.0;
-  bool m_in_contact = false;
   int m_n_rows = 0;
   double m_output_seconds = 0.0; ///< inside the history sink
   double m_last_external_work = 0.0; ///< of the last row

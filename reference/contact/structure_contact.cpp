@@ -1,0 +1,53 @@
+#include "structure_contact.hpp"
+
+#include <stdexcept>
+
+#include "tip_casing_contact.hpp"
+#include "tip_ring_frictional_contact.hpp"
+
+namespace rsi {
+
+StructureContact::StructureContact(const Problem& problem) {
+  const ProblemContact& c = problem.contact;
+  switch (c.kind) {
+  case ContactKind::none:
+    throw std::invalid_argument(problem.source + ": the problem has no contact to run");
+  case ContactKind::tip_ring: {
+    if (!problem.paper) throw std::logic_error("StructureContact: tip_ring without the 2D parts");
+    const PaperParts& parts = *problem.paper;
+    if (c.friction_law == FrictionLaw::coulomb) {
+      auto law = std::make_shared<const TipRingFrictionalContact>(parts.bladed_disk, parts.casing,
+                                                                  parts.case_file);
+      m_frictional = law.get();
+      m_owned = law;
+    } else {
+      auto law =
+          std::make_shared<const TipCasingContact>(parts.bladed_disk, parts.casing, parts.case_file);
+      m_law = law.get();
+      m_owned = law;
+    }
+    return;
+  }
+  case ContactKind::rigid_surface: {
+    const Component& rotor = problem.structures.front();
+    const ImposedGap gap = problem.casing.oval_gap
+                               ? ImposedGap::oval(problem.casing.gap, problem.casing.gap_width)
+                               : ImposedGap::constant(problem.casing.gap);
+    auto law = std::make_shared<const RigidSurfaceContact>(
+        rigid_surface_nodes(rotor, c.contact_nodes), gap, c.rotation_speed,
+        c.friction_coefficient, c.sliding_speed, rotor.rotation_axis);
+    m_frictional = law.get();
+    m_rigid_surface = law.get();
+    m_owned = law;
+    return;
+  }
+  }
+}
+
+int StructureContact::n_contacts() const {
+  if (m_law) return m_law->n_constraints();
+  if (m_frictional) return m_frictional->n_contacts();
+  return 0;
+}
+
+} // namespace rsi

@@ -1,0 +1,150 @@
+#include "full_order_run.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <stdexcept>
+
+#include "casing_forcing.hpp"
+#include "central_difference.hpp"
+#include "modal_analysis.hpp"
+#include "paper_monitor.hpp"
+
+namespace rsi {
+namespace {
+
+/// The integrator over whichever law the handle holds (in place: it keeps
+/// references into its own members).
+void emplace_integrator(std::optional<CentralDifference>& cd, const FullOrderSystem& system) {
+  const StructureContact& contact = *system.contact;
+  if (contact.law())
+    cd.emplace(*system.stiffness, *system.mass, system.dt, *contact.law(), system.damping);
+  else
+    cd.emplace(*system.stiffness, *system.mass, system.dt, *contact.frictional_law(),
+               system.damping);
+}
+
+/// A structure's name in messages ("bladed-disk" -> "bladed disk").
+std::string part_name(const Component& component) {
+  std::string name = component.name;
+  std::replace(name.begin(), name.end(), '-', ' ');
+  return name;
+}
+
+} // namespace
+
+void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSummary& s,
+                      Clock::time_point start) {
+  std::optional<CentralDifference> integrator;
+  emplace_integrator(integrator, system);
+  CentralDifference& cd = *integrator;
+  s.flops_per_step = cd.flops_per_step();
+  const Eigen::Index n_dofs = system.stiffness->rows();
+  const bool has_force = system.forcing != nullptr && system.forcing->any();
+  const Eigen::VectorXd no_force = Eigen::VectorXd::Zero(n_dofs);
+  Forcing window; // forcing_active's rule: t <= until + 1e-6 dt
+  window.duration = has_force ? system.forcing->until : 0.0;
+  const auto active = [&](double t) { return has_force && forcing_active(window, t, system.dt); };
+
+  // The casing displacement is gathered from the integrator's permuted state
+  // only when the monitor reads it (the paper's first contact).
+  const Eigen::VectorXd not_needed;
+  const TipDisplacementSource tips = [&](Eigen::VectorXd& out) {
+    const Eigen::VectorXd& u = cd.displacement();
+    out.resize(static_cast<Eigen::Index>(system.tip_dofs.size()));
+    for (size_t i = 0; i < system.tip_dofs.size(); ++i)
+      out(static_cast<Eigen::Index>(i)) = u(system.tip_dofs[i]);
+  };
+  const bool coulomb = system.contact->coulomb();
+  auto state = [&](bool with_casing) {
+    return StepState{
+        cd.step_index(),
+        cd.time(),
+        cd.gap(),
+        cd.lambda(),
+        cd.external_work(),
+        cd.contact_work(),
+        with_casing && system.casing_count > 0
+            ? Eigen::Ref<const Eigen::VectorXd>(
+                  cd.displacement().segment(system.casing_first, system.casing_count))
+            : Eigen::Ref<const Eigen::VectorXd>(not_needed),
+        cd.damping_work(),
+        coulomb ? &cd.lambda_tangential() : nullptr,
+        system.tip_dofs.empty() ? nullptr : &tips};
+  };
+  const auto energy = [&]() { return cd.energy(); };
+
+  const Clock::time_point integration_start = Clock::now();
+  bool forced = active(0.0);
+  cd.start(forced ? system.forcing->force : no_force);
+  monitor.start(state(false), cd.initial_energy());
+  for (int n = 0; n < s.steps_requested; ++n) {
+    if (active(n * system.dt) != forced) {
+      forced = !forced;
+      cd.set_force(forced ? system.forcing->force : no_force);
+    }
+    StepReport r;
+    try {
+      r = cd.step();
+    } catch (const IntegrationError& e) {
+      if (!system.failure_is_status) throw;
+      monitor.stop_with(e.what());
+      break;
+    }
+    if (!monitor.after_step(r, state(monitor.needs_casing(r)), energy)) break;
+  }
+  monitor.finish(seconds_since(integration_start), seconds_since(start));
+  // The works where the run stopped (the last row's unless the last step was
+  // outside the model and wrote none).
+  s.final_external_work = cd.external_work();
+  s.final_contact_work = cd.contact_work();
+  s.final_damping_work = cd.damping_work();
+}
+
+RunResult run_full_order(const Problem& problem, const RunOptions& options) {
+  if (problem.steps.rule != ProblemSteps::Rule::fixed)
+    throw std::invalid_argument(problem.source +
+                                ": run_full_order takes the fixed step rule (the paper's kind)");
+  const Clock::time_point start = Clock::now();
+  const double dt = problem.steps.step;
+  const Eigen::SparseMatrix<double> k = problem.stiffness();
+  const Eigen::SparseMatrix<double> m = problem.mass();
+
+  RunResult result;
+  RunSummary& s = result.summary;
+  s.method = "full";
+  s.n_dofs = static_cast<int>(k.rows());
+  for (const Component& part : problem.structures)
+    check_time_step_bound(dt, part.stiffness, part.mass, options.force, part_name(part));
+  // The rotor's own limit is reported (a reduced run's is compared with it);
+  // the system's is the largest omega_max of its structures.
+  const double omega_rotor =
+      max_angular_frequency(problem.structures.front().stiffness, problem.structures.front().mass);
+  s.bladed_disk_critical_dt = 2.0 / omega_rotor;
+  double omega_max = omega_rotor;
+  for (size_t i = 1; i < problem.structures.size(); ++i)
+    omega_max = std::max(omega_max, max_angular_frequency(problem.structures[i].stiffness,
+                                                           problem.structures[i].mass));
+  check_time_step(dt, omega_max, options.force, s);
+
+  // The friction law of the case: sliding_sign (the first round's, the
+  // golden history's) or Coulomb with stick and slip. Rayleigh damping of
+  // both parts; with central damping (central_difference.hpp) the stable
+  // step is 2/omega_max for any alpha, beta >= 0: the check above stands.
+  const StructureContact contact(problem);
+  if (!problem.paper) throw std::invalid_argument(problem.source + ": no flexible casing");
+  RunMonitor monitor(problem.paper->case_file, problem.paper->casing, options, result);
+  FullOrderSystem system;
+  system.stiffness = &k;
+  system.mass = &m;
+  system.dt = dt;
+  system.damping = problem.damping.rayleigh;
+  system.contact = &contact;
+  system.forcing = &problem.forcing;
+  system.casing_first = problem.offset(problem.casing.structure);
+  system.casing_count = problem.structures[static_cast<size_t>(problem.casing.structure)].n_dofs();
+  system.tip_dofs = problem.contact.rotor_dofs;
+  drive_full_order(system, monitor, s, start);
+  return result;
+}
+
+} // namespace rsi

@@ -1,0 +1,68 @@
+#pragma once
+// The one time loop of the full-order solver, for every kind of problem
+// (problem.hpp): the structures' K and M side by side, one contact law
+// behind StructureContact, central differences (central_difference.hpp)
+//   M (u_{n+1} - 2 u_n + u_{n-1}) / dt^2 + C (u_{n+1} - u_{n-1}) / (2 dt) + K u_n = F_n + R_n,
+// C = alpha M + beta K, from rest (u_0 = 0, u_{-1} = dt^2/2 A^-1 F_0), F_n
+// the problem's force while t_n <= until (held, so a piecewise constant
+// force costs nothing a step), R_n the contact force of the step.
+//
+// The loop owns no physics and no bookkeeping: each step's state (gaps,
+// multipliers, the works, E on demand, the casing and tips when asked) goes
+// to a RunMonitor, whose common part keeps the summary, the rows and the
+// energy balance in its one form for every kind,
+//   E_{n-1/2} - E_0 - W_ext - W_contact + W_damp = 0 (to round-off),
+// (W_ext = 0 exactly for a kind without forcing: the same numbers as a
+// balance without it), and whose KindMonitor adds the kind's tests (the
+// paper's: paper_monitor.hpp; a component's on the rigid casing:
+// rubbing_monitor.hpp).
+//
+// A failed contact solve (IntegrationError) propagates, or when the loop is
+// told so it stops the run with the solver's message as the status (the
+// rows before it already written).
+
+#include <functional>
+
+#include <Eigen/SparseCore>
+
+#include "problem.hpp"
+#include "run_monitor.hpp"
+#include "structure_contact.hpp"
+
+namespace rsi {
+
+/// What the loop integrates (not owned: each must outlive the run).
+struct FullOrderSystem {
+  const Eigen::SparseMatrix<double>* stiffness = nullptr; ///< K of the whole system
+  const Eigen::SparseMatrix<double>* mass = nullptr;      ///< M of the whole system
+  double dt = 0.0;                                        ///< [s], > 0
+  RayleighDamping damping;                                ///< alpha, beta >= 0
+  const StructureContact* contact = nullptr;
+  const ProblemForcing* forcing = nullptr; ///< nullptr or empty: unforced
+  /// The flexible casing's dofs [first, first + count) for the monitor's
+  /// first contact (count 0: none).
+  int casing_first = 0;
+  int casing_count = 0;
+  /// The rows' tip displacements (RunOptions::tip_displacement): these
+  /// system dofs, in the row's order (empty: none).
+  std::vector<int> tip_dofs;
+  /// A failed contact solve stops the run as its status (else it throws).
+  bool failure_is_status = false;
+};
+
+/// Runs `system` for the monitor's steps_requested steps from rest and
+/// closes the monitor (RunMonitor::finish: the time loop's clock and the
+/// wall clock since `start`). Fills `summary`'s flops_per_step and the
+/// integrator's final works. Throws IntegrationError (unless
+/// failure_is_status) and what the monitor or the options' checkpoint throws.
+void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSummary& summary,
+                      Clock::time_point start);
+
+/// The full-order run of a problem with the fixed step rule (the paper's
+/// kind): the stability checks of each structure (check_time_step_bound,
+/// then check_time_step on the largest omega_max), the paper's monitor,
+/// rows kept or streamed as RunOptions says. Throws StabilityError,
+/// IntegrationError or ModalError; std::invalid_argument for another rule.
+RunResult run_full_order(const Problem& problem, const RunOptions& options);
+
+} // namespace rsi

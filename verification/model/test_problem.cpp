@@ -1,0 +1,256 @@
+// The one loader (reference/model/problem.hpp): every case file in
+// data/cases gives a Problem of the expected kind and sizes, and the
+// contact handle (reference/contact/structure_contact.hpp) holds the law the
+// problem names. Each expected number says where it comes from: the paper's
+// sizes from the case's own parameters (formula below), the components'
+// from the model's documentation (docs/case-files.md, the external model's
+// README) and the case file's keys.
+//
+// Paper's bladed disk, SPEC §2 and bladed_disk.hpp's block layout: a sector
+// is the rim node (u, u_s, v, v_s: 4 dofs), n - 1 blade nodes (ux, uy,
+// theta: 3 each) and the tip node (u, v, theta: 3), so 4 + 3 n dofs a
+// sector, N sectors; the casing ring: 4 dofs a node (casing.hpp), n_c
+// nodes, one clamped:
+//   n_dofs = N (4 + 3 n) + 4 (n_c - 1).
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "calculix_run.hpp"
+#include "child_process.hpp"
+#include "problem.hpp"
+#include "structure_contact.hpp"
+
+namespace rsi {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string case_path(const std::string& name) {
+  return std::string(RSI_SOURCE_DIR) + "/data/cases/" + name;
+}
+
+std::string cache_dir() {
+  const char* env = std::getenv("RSI_CCX_CACHE");
+  return env && *env ? env : RSI_BINARY_DIR "/ccx-cache";
+}
+
+/// N (4 + 3 n) + 4 (n_c - 1), the header's formula.
+int paper_dofs(int n_blades, int n_blade_elements, int n_casing_elements) {
+  return n_blades * (4 + 3 * n_blade_elements) + 4 * (n_casing_elements - 1);
+}
+
+/// Why a component case cannot load here (a tool or the external model
+/// absent), or empty.
+std::string component_missing(const std::string& name) {
+  const bool gmsh_blade = name.rfind("blade3d", 0) == 0;
+  if (gmsh_blade && !executable_on_path("gmsh")) return "gmsh is not on PATH (Debian package gmsh)";
+  if (!gmsh_blade && !fs::exists(RSI_SOURCE_DIR "/../shared/external/rotor37/blade.inp"))
+    return "the external Rotor 37 model (shared/external/rotor37/blade.inp) is absent";
+  try {
+    find_ccx();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
+void expect_paper(const std::string& name, int n_blade_elements, double step, double duration,
+                  int output_every) {
+  const Problem p = load_problem(case_path(name));
+  // data/cases/NAME: 22 blades, casing of 40 elements.
+  const int expected = paper_dofs(22, n_blade_elements, 40);
+  std::printf("%s: %d dofs (expected %d), %d contacts, %ld steps\n", name.c_str(), p.n_dofs(),
+              expected, p.contact.n_contacts(), p.steps.fixed_steps());
+  EXPECT_EQ(p.kind, ProblemKind::paper);
+  ASSERT_EQ(p.structures.size(), 2u);
+  EXPECT_EQ(p.structures[0].n_dofs(), 22 * (4 + 3 * n_blade_elements));
+  EXPECT_EQ(p.structures[1].n_dofs(), 4 * 39);
+  EXPECT_EQ(p.n_dofs(), expected);
+  EXPECT_EQ(p.offset(1), p.structures[0].n_dofs());
+  EXPECT_EQ(p.stiffness().rows(), expected);
+  EXPECT_EQ(p.mass().cols(), expected);
+  // The tips' u, v are the bladed disk's boundary: one contact a blade.
+  EXPECT_EQ(p.contact.kind, ContactKind::tip_ring);
+  EXPECT_EQ(p.contact.rotor_dofs, p.structures[0].boundary);
+  EXPECT_EQ(p.contact.n_contacts(), 22);
+  // operating_point: 310 rad/s, mu 0.15, friction_law absent = coulomb (data/README.md).
+  EXPECT_EQ(p.contact.friction_law, FrictionLaw::coulomb);
+  EXPECT_EQ(p.contact.friction_coefficient, 0.15);
+  EXPECT_EQ(p.contact.rotation_speed, 310.0);
+  // The flexible casing is structure 1; R_c - R_t = 0.501 - 0.5 m.
+  EXPECT_FALSE(p.casing.rigid);
+  EXPECT_EQ(p.casing.structure, 1);
+  EXPECT_NEAR(p.casing.clearance, 1e-3, 1e-15); // two decimal inputs: a few ulps of 0.5
+  // forcing: F0 = 1000 N cos(2 theta_j) on the casing only, node 0 at
+  // theta = 0 (the clamp is at 180 degrees), until 0.2 ms.
+  ASSERT_EQ(p.forcing.force.size(), expected);
+  EXPECT_EQ(p.forcing.force.head(p.structures[0].n_dofs()).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_NEAR(p.forcing.force.cwiseAbs().maxCoeff(), 1000.0, 1e-9); // cos(0) = 1, exact
+  EXPECT_EQ(p.forcing.until, 2e-4);
+  // time: the fixed rule, duration / step steps, output_every of the file.
+  EXPECT_EQ(p.steps.rule, ProblemSteps::Rule::fixed);
+  EXPECT_EQ(p.steps.step, step);
+  EXPECT_EQ(p.steps.fixed_steps(), std::lround(duration / step));
+  EXPECT_EQ(p.outputs.output_every, output_every);
+  EXPECT_EQ(p.outputs.response_dof, -1);
+  ASSERT_TRUE(p.paper.has_value());
+  EXPECT_EQ(p.paper->bladed_disk.n_dofs(), p.structures[0].n_dofs());
+
+  // The contact handle holds the Coulomb law over the 22 tips.
+  const StructureContact contact(p);
+  EXPECT_TRUE(contact.coulomb());
+  EXPECT_EQ(contact.law(), nullptr);
+  EXPECT_EQ(contact.n_contacts(), 22);
+}
+
+TEST(Problem, PaperCasesHaveTheirModelsSizes) {
+  // 838 = 22 x 31 + 156: the default case's count (SPEC §2).
+  EXPECT_EQ(paper_dofs(22, 9, 40), 838);
+  expect_paper("batailly2007.json", 9, 5e-7, 0.02, 50);
+  expect_paper("batailly2007-36el.json", 36, 3.125e-7, 0.02, 80);
+  expect_paper("batailly2007-72el.json", 72, 1e-7, 0.02, 250);
+}
+
+TEST(Problem, SlidingSignCaseGetsTheSlidingSignLaw) {
+  Case c = load_case(case_path("batailly2007.json"));
+  c.operating_point.friction_law = FrictionLaw::sliding_sign;
+  const Problem p = paper_problem(c);
+  EXPECT_EQ(p.contact.friction_law, FrictionLaw::sliding_sign);
+  const StructureContact contact(p);
+  EXPECT_FALSE(contact.coulomb());
+  ASSERT_NE(contact.law(), nullptr);
+  EXPECT_EQ(contact.n_contacts(), 22);
+}
+
+/// What a component case must give: dofs and the rubbing set-up's numbers.
+struct ComponentExpectation {
+  int n_dofs = 0;
+  int contacts = 0;            ///< 0: no "rubbing"
+  int response_node = 0;
+  double mu = 0.0;
+  double revolutions = 0.0;
+  double sliding_sign = 1.0;   ///< Omega_s / Omega
+  bool lumped = false;         ///< component.mass "lumped": M diagonal (HRZ)
+};
+
+void expect_component(const std::string& name, const ComponentExpectation& e) {
+  const Problem p = load_problem(case_path(name), {"", cache_dir()});
+  std::printf("%s: %d dofs (expected %d), %d contacts\n", name.c_str(), p.n_dofs(), e.n_dofs,
+              p.contact.n_contacts());
+  EXPECT_EQ(p.kind, ProblemKind::component);
+  ASSERT_EQ(p.structures.size(), 1u);
+  EXPECT_EQ(p.n_dofs(), e.n_dofs);
+  EXPECT_EQ(p.stiffness().rows(), e.n_dofs);
+  EXPECT_TRUE(p.casing.rigid);
+  EXPECT_FALSE(p.forcing.any());
+  ASSERT_TRUE(p.component_case.has_value());
+  // HRZ lumping leaves one entry a row; a consistent mass couples the nodes.
+  if (e.lumped)
+    EXPECT_EQ(p.structures[0].mass.nonZeros(), e.n_dofs);
+  else
+    EXPECT_GT(p.structures[0].mass.nonZeros(), e.n_dofs);
+  if (e.contacts == 0) {
+    EXPECT_EQ(p.contact.kind, ContactKind::none);
+    EXPECT_THROW(StructureContact{p}, std::invalid_argument);
+    return;
+  }
+  EXPECT_EQ(p.contact.kind, ContactKind::rigid_surface);
+  EXPECT_EQ(p.contact.n_contacts(), e.contacts);
+  // ux, uy, uz of each contact node, and the boundary is exactly those
+  // (the cases' boundary is the tip node set).
+  EXPECT_EQ(static_cast<int>(p.contact.rotor_dofs.size()), 3 * e.contacts);
+  EXPECT_EQ(p.contact.rotor_dofs, p.structures[0].boundary);
+  EXPECT_EQ(p.contact.friction_law, FrictionLaw::coulomb);
+  EXPECT_EQ(p.contact.friction_coefficient, e.mu);
+  // rubbing: Omega = 1344 rad/s, oval gap g_m = 0.356 mm, w = 0.15,
+  // N = 1000 samples a revolution, step_safety 0.9.
+  EXPECT_EQ(p.contact.rotation_speed, 1344.0);
+  EXPECT_EQ(p.contact.sliding_speed, e.sliding_sign * 1344.0);
+  EXPECT_TRUE(p.casing.oval_gap);
+  EXPECT_EQ(p.casing.gap, 0.356);
+  EXPECT_EQ(p.casing.gap_width, 0.15);
+  EXPECT_EQ(p.steps.rule, ProblemSteps::Rule::per_revolution);
+  EXPECT_EQ(p.steps.steps_per_revolution, 1000);
+  EXPECT_EQ(p.steps.revolutions, e.revolutions);
+  EXPECT_EQ(p.steps.step_safety, 0.9);
+  EXPECT_EQ(p.outputs.output_every, 1);
+  // rubbing.response: direction 2 of its node.
+  ASSERT_GE(p.outputs.response_dof, 0);
+  EXPECT_EQ(p.structures[0].dofs[p.outputs.response_dof].node, e.response_node);
+  EXPECT_EQ(p.structures[0].dofs[p.outputs.response_dof].kind, "uy");
+  EXPECT_EQ(p.outputs.response_name, "u_" + std::to_string(e.response_node) + "_2");
+
+  const StructureContact contact(p);
+  EXPECT_TRUE(contact.coulomb());
+  ASSERT_NE(contact.rigid_surface(), nullptr);
+  EXPECT_EQ(contact.n_contacts(), e.contacts);
+  EXPECT_EQ(contact.rigid_surface()->sliding_speed(), e.sliding_sign * 1344.0);
+}
+
+// The gmsh blade at element_size 10: 4,101 dofs (docs/case-files.md; the
+// element-size table of test_gmsh_blade_cache), its TIP node set 16 nodes
+// (test_component_rubbing). blade3d-rubbing.json: mu 0.05, 1 revolution,
+// response node 11, the tip sliding with the rotation (no tip_sliding key).
+TEST(Problem, GmshBladeCases) {
+  if (const std::string why = component_missing("blade3d"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("blade3d.json", {4101, 0, 0, 0.0, 0.0, 1.0, false});
+  // component.mass: lumped in the rubbing case.
+  expect_component("blade3d-rubbing.json", {4101, 16, 11, 0.05, 1.0, 1.0, true});
+}
+
+// Rotor 37 (shared/external/rotor37/README.md): 61,098 dofs, 16 contact
+// nodes, response node 1353 direction 2, mu 0.15, NLstep's set-up with the
+// tip sliding against the rotation (tip_sliding: against_rotation).
+// rotor37-rubbing.json runs 50 revolutions, the lumped variant 1. One test
+// a case: each loads the 61,098-dof model (a few seconds).
+TEST(Problem, Rotor37Case) {
+  if (const std::string why = component_missing("rotor37"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("rotor37.json", {61098, 0, 0, 0.0, 0.0, 1.0, false});
+}
+
+TEST(Problem, Rotor37RubbingCase) {
+  if (const std::string why = component_missing("rotor37"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("rotor37-rubbing.json", {61098, 16, 1353, 0.15, 50.0, -1.0, false});
+}
+
+TEST(Problem, Rotor37RubbingLumpedCase) {
+  if (const std::string why = component_missing("rotor37"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("rotor37-rubbing-lumped.json", {61098, 16, 1353, 0.15, 1.0, -1.0, true});
+}
+
+// Every case file in data/cases is one of the above: a new case needs its
+// expectations here.
+TEST(Problem, EveryCaseFileIsCovered) {
+  const std::map<std::string, std::string> covered = {
+      {"batailly2007.json", "paper"},        {"batailly2007-36el.json", "paper"},
+      {"batailly2007-72el.json", "paper"},   {"blade3d.json", "component"},
+      {"blade3d-rubbing.json", "component"}, {"rotor37.json", "component"},
+      {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"}};
+  int files = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(RSI_SOURCE_DIR "/data/cases")) {
+    if (entry.path().extension() != ".json") continue;
+    ++files;
+    EXPECT_EQ(covered.count(entry.path().filename().string()), 1u)
+        << entry.path() << " has no expectations in test_problem.cpp";
+  }
+  std::printf("%d case files, %zu covered\n", files, covered.size());
+  EXPECT_EQ(files, static_cast<int>(covered.size()));
+}
+
+TEST(Problem, MissingFileIsACaseError) {
+  EXPECT_THROW(load_problem(case_path("no-such-case.json")), CaseError);
+}
+
+} // namespace
+} // namespace rsi
