@@ -16,6 +16,7 @@
 #include "run_monitor.hpp"
 #include "run_outputs.hpp"
 #include "sweep_speeds_option.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 namespace {

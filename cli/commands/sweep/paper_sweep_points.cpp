@@ -12,13 +12,16 @@
 #include "interaction_lines.hpp"
 #include "interruption.hpp"
 #include "modal_analysis.hpp"
+#include "command_options.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
 #include "run_monitor.hpp"
 #include "run_outputs.hpp"
+#include "run_list_checks.hpp"
 #include "run_step.hpp"
 #include "sweep_indicators.hpp"
 #include "sweep_speeds_option.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 namespace {
@@ -232,7 +235,11 @@ std::unique_ptr<SweepPoints> paper_sweep_points(Case c, const SweepOptions& opti
   const Casing casing = assemble_casing(c);
   if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
                   [](const CampaignRun& r) { return r.method == "full"; }))
-    check_case_step_bound(c, casing, "sweep");
+    try {
+      check_case_step_bound(c, casing);
+    } catch (const StabilityError& e) {
+      throw without_force(e, "time.step; a sweep has no --force");
+    }
   // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
   if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
                   [](const CampaignRun& r) { return r.method != "full"; }))

@@ -7,7 +7,7 @@
 
 #include <memory>
 
-#include "commands.hpp"
+#include "sweep_options.hpp"
 #include "sweep_points.hpp"
 
 namespace rsi {
