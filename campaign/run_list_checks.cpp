@@ -30,8 +30,8 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
       throw CaseError(where + ": " + r.method + " with " + std::to_string(r.modes) +
                       " modes: must be in " +
                       (r.method == "guyan" ? std::string("[0, 0] for guyan")
-                                           : "[0, " + std::to_string(most) + "] for " +
-                                                 r.method + " (dofs minus boundary dofs)"));
+                                           : "[0, " + std::to_string(most) + "] for " + r.method +
+                                                 " (dofs minus boundary dofs)"));
     // Its dense basis, as many at once as threads build them (basis_memory.hpp).
     check_dense_basis_fits(where + ": " + r.name(), bd.n_dofs(),
                            static_cast<int>(bd.boundary.size()), r.modes, runs_at_once);

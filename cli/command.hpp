@@ -22,7 +22,8 @@ class StagedOutput;
 
 class Command {
 public:
-  explicit Command(CLI::App& command) : m_command(command) {}
+  explicit Command(CLI::App& command)
+      : m_command(command) {}
   virtual ~Command() = default;
   Command(const Command&) = delete;
   Command& operator=(const Command&) = delete;

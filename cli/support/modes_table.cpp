@@ -20,7 +20,8 @@ ModesTable modes_table(const ComponentInput& input, int count) {
   csv << "index,frequency_hz,nodal_diameter,uncertainty_hz,digits,rigid_body\n";
   csv.precision(12);
   for (int i = 0; i < modes.n_modes(); ++i) {
-    const std::optional<int> nd = input.diameter ? input.diameter(modes.shapes.col(i)) : std::nullopt;
+    const std::optional<int> nd =
+        input.diameter ? input.diameter(modes.shapes.col(i)) : std::nullopt;
     table.diameters.push_back(nd);
     csv << i + 1 << "," << modes.claimed_frequency_hz(i) << ",";
     if (nd) csv << *nd;

@@ -18,10 +18,10 @@ struct SimulateOptions {
   bool force = false;
   bool full_field = false;
   std::string time_step = "case"; ///< --time-step: case, own or a step in seconds (reduced methods)
-  double step_safety = 0.9;        ///< --step-safety: of --time-step own
-  int casing_modes = 0;            ///< --casing-modes: 0 the full casing (reduced methods)
+  double step_safety = 0.9;       ///< --step-safety: of --time-step own
+  int casing_modes = 0;           ///< --casing-modes: 0 the full casing (reduced methods)
   std::string selection = "lowest"; ///< --selection: mode selection (reduced methods)
-  ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
+  ComponentLoadOptions load;        ///< component cases: --source, --ccx-cache
 };
 
 /// rsi simulate on a component case with a "rubbing" object: its rubbing

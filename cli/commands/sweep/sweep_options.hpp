@@ -21,9 +21,9 @@ struct SweepOptions {
   int casing_modes = 0;
   std::string time_step = "case";
   double step_safety = 0.9;
-  int jobs = 0;       ///< threads a process; 0: 2 alone, 1 a rank under mpirun
-  bool quiet = false; ///< no progress lines on stderr
-  bool report = true; ///< run the case's report generator (reports/) at the end
+  int jobs = 0;              ///< threads a process; 0: 2 alone, 1 a rank under mpirun
+  bool quiet = false;        ///< no progress lines on stderr
+  bool report = true;        ///< run the case's report generator (reports/) at the end
   ComponentLoadOptions load; ///< component cases: --source, --ccx-cache
   /// The paper-case run options given (--casing-modes, --selection,
   /// --time-step, --step-safety): a component case refuses them.
