@@ -18,12 +18,11 @@
 #include "command.hpp"
 #include "command_options.hpp"
 
-#include "component_sweep_points.hpp"
 #include "interruption.hpp"
 #include "mpi_session.hpp"
 #include "output_files.hpp"
 #include "output_sets.hpp"
-#include "paper_sweep_points.hpp"
+#include "sweep_case_options.hpp"
 #include "report_script.hpp"
 #include "run_monitor.hpp"
 #include "staged_output.hpp"
@@ -157,14 +156,14 @@ private:
 std::unique_ptr<SweepPoints> sweep_points_of(const SweepOptions& options, int jobs) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
-    return component_sweep_points(parse_component_case(document, options.case_path), options);
+    return component_case_sweep(parse_component_case(document, options.case_path), options);
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
   if (options.method == "macneal")
     throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
                      "component cases), got 'macneal'");
-  return paper_sweep_points(parse_case(document, options.case_path), options, jobs);
+  return paper_case_sweep(parse_case(document, options.case_path), options, jobs);
 }
 
 double median(std::vector<double> x) {
