@@ -6,7 +6,7 @@ frontier of SPEC §8, issue 14): figures and report.md from the outputs of
 Usage: make_campaign_report.py DIR
 Reads DIR/convergence.csv, DIR/modes-bladed-disk.csv and
 DIR/runs/<run>/{history.csv,summary.json}; writes DIR/report.md and
-DIR/*.png (names within the campaign's output set, cli/output_sets.cpp).
+DIR/*.png (names within the campaign's output set, cli/support/output_sets.cpp).
 Every number in the text is read from those files; the paper's numbers are
 quoted from Batailly et al. (ASME IDETC 2007).
 

@@ -1,6 +1,6 @@
 #pragma once
 // The signal a process was asked to stop by (SIGINT, SIGTERM), recorded by
-// the CLI's handlers (cli/interruption.hpp) and polled by long work: the
+// the CLI's handlers (cli/support/interruption.hpp) and polled by long work: the
 // runs' checkpoint every 1000 steps, the eigensolvers' operators at every
 // product (cholmod_shift_invert.hpp, block_shift_invert.hpp), a child
 // process's wait (child_process.hpp: gmsh, ccx), the CLI's loops between

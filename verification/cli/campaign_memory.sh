@@ -7,7 +7,7 @@
 # resident memory may differ by allocator and thread slack, not by the
 # rows (about 50 doubles a row: 2 x 320,001 x 400 B = 256 MB when they
 # were kept) nor by the blade-1 gaps of the error norms, which go to a
-# scratch file (cli/scratch_series.hpp; 2 x 320,001 x 8 B = 5,000 kB when
+# scratch file (cli/support/scratch_series.hpp; 2 x 320,001 x 8 B = 5,000 kB when
 # they were kept; measured with the binary before scratch_series, 381a74c~1:
 # 3,744 kB, fails). Limit: 2,500 kB, half of what keeping the gaps costs.
 # The slack at 40,000 steps with two busy loops beside the campaign:

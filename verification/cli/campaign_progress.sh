@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `rsi campaign` shows its progress and checks cheap limits before its runs
-# (issue 13, classes 9 and 8; cli/campaign_progress.hpp).
+# (issue 13, classes 9 and 8; cli/support/campaign_progress.hpp).
 #  1. Every finished run's line on stderr carries the runs done out of the
 #     total (a 1 ms campaign of 6 runs), in order 1..N, the time elapsed
 #     and, but for the last, the estimated time left (logs and pipes too:

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A reduced rubbing run streams its rows (issue "Hardening, third round",
-# class 2: cli/rubbing_run.cpp's reduced runs kept the whole history in
+# class 2: campaign/rubbing_run.cpp's reduced runs kept the whole history in
 # memory, a ComponentHistory of every row, and wrote it at the end: hundreds
 # of MB at 1000 revolutions). The same CB-2 run of the small bar model
 # (verification/cli/ring_model.py, one contact node: 10 numbers a row),

@@ -5,42 +5,55 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
-#include "commands.hpp"
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+#include "command_options.hpp"
 #include "component_input.hpp"
 #include "modal_analysis.hpp"
+#include "modes_table.hpp"
 #include "output_files.hpp"
+#include "output_sets.hpp"
 #include "staged_output.hpp"
-#include "stream_text.hpp"
 #include "terminal_progress.hpp"
 
 namespace rsi {
 namespace {
 
-ModesTable table_of(const ComponentInput& input, int count) {
-  const Component& part = input.component;
-  const int n = part.n_dofs();
-  if (count < 1 || count > n)
-    throw UsageError("--count: must be in [1, " + std::to_string(n) + "] for part " + part.name +
-                     " (its number of dofs), got " + std::to_string(count));
-  ModesTable table{lowest_modes(part.stiffness, part.mass, count), {}, {}, n};
-  const Modes& modes = table.modes;
-  std::ostringstream csv;
-  csv << "index,frequency_hz,nodal_diameter,uncertainty_hz,digits,rigid_body\n";
-  csv.precision(12);
-  for (int i = 0; i < modes.n_modes(); ++i) {
-    const std::optional<int> nd = input.diameter ? input.diameter(modes.shapes.col(i)) : std::nullopt;
-    table.diameters.push_back(nd);
-    csv << i + 1 << "," << modes.claimed_frequency_hz(i) << ",";
-    if (nd) csv << *nd;
-    char uncertainty[32];
-    std::snprintf(uncertainty, sizeof uncertainty, "%.3g", modes.uncertainty_hz(i));
-    csv << "," << uncertainty << "," << modes.digits(i) << "," << (modes.is_zero(i) ? 1 : 0)
-        << "\n";
-  }
-  table.csv = stream_text(csv);
-  return table;
+struct ModesOptions {
+  std::string case_path;
+  std::string part;  ///< empty: the bladed disk, or the component of a component case
+  int count = 50;
+  std::string out = "out/modes";
+  ComponentLoadOptions load;
+};
+
+class ModesCommand : public Command {
+public:
+  explicit ModesCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  ModesOptions m_options;
+};
+
+ModesCommand::ModesCommand(CLI::App& app)
+    : Command(*app.add_subcommand("modes", "Lowest modes of one component -> DIR/modes.csv")) {
+  ModesOptions& modes = m_options;
+  m_command.add_option("case", modes.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  m_command.add_option("--part", modes.part,
+                       "bladed-disk (default) or casing for the paper's case; a component "
+                       "case has one part, its name");
+  m_command.add_option("--count", modes.count, "number of modes, 1..number of dofs")
+      ->capture_default_str()
+      ->check(integer_in(1, 1000000000, "an integer in [1, the part's number of dofs]"));
+  m_command.add_option("--out", modes.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  add_component_options(m_command, modes.load);
 }
 
 /// What the check of the modes found and how many digits the frequencies
@@ -90,17 +103,14 @@ void print_accuracy(const Modes& modes) {
 
 } // namespace
 
-ModesTable modes_table(const Case& c, const std::string& part_name, int count) {
-  return table_of(paper_part_input(c, part_name), count);
-}
-
-int run_modes(const ModesOptions& options, StagedOutput& output) {
+int ModesCommand::run(StagedOutput& output) {
+  const ModesOptions& options = m_options;
   const auto start = std::chrono::steady_clock::now();
   TerminalStage stage("modes: loading " + options.case_path + " and solving for " +
                       std::to_string(options.count) + " modes");
   const ComponentInput input = load_component_input(options.case_path, options.part, options.load);
   const auto loaded = std::chrono::steady_clock::now();
-  const ModesTable table = table_of(input, options.count);
+  const ModesTable table = modes_table(input, options.count);
   const auto solved = std::chrono::steady_clock::now();
   stage.done();
   const Modes& modes = table.modes;
@@ -135,6 +145,10 @@ int run_modes(const ModesOptions& options, StagedOutput& output) {
   if (shown < modes.n_modes()) std::printf("   ... %d more\n", modes.n_modes() - shown);
   output.announce("wrote " + path + "\n");
   return 0;
+}
+
+std::unique_ptr<Command> add_modes_command(CLI::App& app) {
+  return std::make_unique<ModesCommand>(app);
 }
 
 } // namespace rsi

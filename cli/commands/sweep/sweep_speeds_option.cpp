@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "commands.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 

@@ -1,4 +1,6 @@
-// rsi simulate: one contact run -> history.csv, summary.json (history streamed).
+// rsi simulate: one contact run -> history.csv, summary.json (history streamed):
+// its options, the rules between them, and the run of the paper's case (a
+// component case: component_simulation.cpp).
 
 #include <cerrno>
 #include <chrono>
@@ -12,20 +14,112 @@
 
 #include <nlohmann/json.hpp>
 
+#include <CLI/CLI.hpp>
+
 #include "case_json.hpp"
-#include "commands.hpp"
+#include "command.hpp"
+#include "command_options.hpp"
 #include "component_case.hpp"
 #include "failure_remedies.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
+#include "output_sets.hpp"
 #include "run_outputs.hpp"
+#include "simulate_options.hpp"
 #include "staged_output.hpp"
 #include "terminal_progress.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 namespace {
+
+class SimulateCommand : public Command {
+public:
+  explicit SimulateCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  /// An option the method does not use is refused, not ignored (cb, ccm
+  /// and guyan check theirs when the basis is built).
+  void check_option_rules() const;
+  /// The paper's case: the reference or a reduced run.
+  int simulate_paper_case(const Case& c, StagedOutput& output) const;
+
+  SimulateOptions m_options;
+  CLI::Option* m_modes = nullptr;
+  CLI::Option* m_step = nullptr;
+  CLI::Option* m_safety = nullptr;
+  CLI::Option* m_casing = nullptr;
+  CLI::Option* m_selection = nullptr;
+};
+
+SimulateCommand::SimulateCommand(CLI::App& app)
+    : Command(*app.add_subcommand(
+          "simulate", "One contact run -> DIR/history.csv, DIR/summary.json (exit 3 on blow-up)")) {
+  SimulateOptions& simulate = m_options;
+  m_command.add_option("case", simulate.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  m_command
+      .add_option("--method", simulate.method,
+                  "full (reference), cb, ccm or guyan; macneal for a component case")
+      ->capture_default_str()
+      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
+  m_modes = m_command.add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
+                ->capture_default_str()
+                ->check(integer_in(0, 1000000000, modes_allowed));
+  m_command.add_flag(
+      "--full-field", simulate.full_field,
+      "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
+  m_step = m_command
+               .add_option("--time-step", simulate.time_step,
+                           "reduced methods: case (time.step), own (the reduced system's stable "
+                           "step times --step-safety) or a step in seconds dividing the output "
+                           "interval; rows at the case's output times")
+               ->capture_default_str();
+  m_safety = m_command
+                 .add_option("--step-safety", simulate.step_safety,
+                             "with --time-step own: the fraction of 2/omega_max, in (0, 1)")
+                 ->capture_default_str()
+                 ->check(CLI::Range(0.0, 1.0));
+  m_casing = m_command
+                 .add_option("--casing-modes", simulate.casing_modes,
+                             "reduced methods: 0 (the full casing) or N_c, the casing in its lowest "
+                             "N_c modes plus a static correction for the forcing")
+                 ->capture_default_str()
+                 ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
+  m_selection =
+      m_command
+          .add_option("--selection", simulate.selection,
+                      "reduced methods: how the kept modes are chosen: lowest, families "
+                      "(whole nodal-diameter families), forced (the forcing's diameters and "
+                      "their aliases first) or participation (boundary participation)")
+          ->capture_default_str()
+          ->check(one_of({"lowest", "families", "forced", "participation"}));
+  m_command.add_option("--out", simulate.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  m_command.add_flag("--force", simulate.force,
+                     "integrate even with a time step above the stability limit");
+  add_component_options(m_command, simulate.load);
+}
+
+void SimulateCommand::check_option_rules() const {
+  const SimulateOptions& simulate = m_options;
+  if (m_modes->count() > 0 && simulate.method == "full")
+    throw UsageError("--modes: only for a reduced method (the full reference keeps "
+                     "no modes); drop it");
+  for (const CLI::Option* o : {m_step, m_safety, m_casing, m_selection})
+    if (o->count() > 0 && simulate.method == "full")
+      throw UsageError(o->get_name() +
+                       ": only for a reduced method (the full reference runs the whole "
+                       "model at time.step); drop it");
+  if (m_safety->count() > 0 && simulate.time_step != "own")
+    throw UsageError("--step-safety: only with --time-step own; drop it");
+}
+
 
 /// field.csv: one row per history row, t then every bladed-disk dof (u = T q).
 std::string field_csv_header(Eigen::Index n_dofs) {
@@ -49,27 +143,9 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 
 } // namespace
 
-StepRule parse_step_option(const std::string& text, double safety) {
-  StepRule rule;
-  rule.safety = safety;
-  if (text == "case") return rule;
-  if (text == "own") {
-    rule.kind = StepRule::Kind::own;
-    return rule;
-  }
-  char* end = nullptr;
-  errno = 0;
-  const double step = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno != 0 || !std::isfinite(step) ||
-      !(step > 0.0))
-    throw UsageError("--time-step: must be case, own or a step in seconds > 0, got '" + text + "'");
-  rule.kind = StepRule::Kind::given;
-  rule.step = step;
-  return rule;
-}
-
-
-int run_simulate(const SimulateOptions& options, StagedOutput& output) {
+int SimulateCommand::run(StagedOutput& output) {
+  check_option_rules();
+  const SimulateOptions& options = m_options;
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document)) {
     // A component run takes its step from its rubbing object (each run at
@@ -78,13 +154,17 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
       throw UsageError("--time-step, --casing-modes, --selection: only for the paper's case; a "
                        "component case sets its steps in its rubbing object and keeps the lowest "
                        "modes");
-    return run_component_simulate(options, parse_component_case(document, options.case_path),
-                                  output);
+    return simulate_component_case(options, parse_component_case(document, options.case_path),
+                                   output);
   }
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
-  const Case c = parse_case(document, options.case_path);
+  return simulate_paper_case(parse_case(document, options.case_path), output);
+}
+
+int SimulateCommand::simulate_paper_case(const Case& c, StagedOutput& output) const {
+  const SimulateOptions& options = m_options;
   const bool full = options.method == "full";
   if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")
     throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
@@ -183,6 +263,10 @@ int run_simulate(const SimulateOptions& options, StagedOutput& output) {
                "up to the stop)\n",
                s.status.c_str(), stopped_run_remedy(s).c_str(), options.out.c_str());
   return 3;
+}
+
+std::unique_ptr<Command> add_simulate_command(CLI::App& app) {
+  return std::make_unique<SimulateCommand>(app);
 }
 
 } // namespace rsi

@@ -1,17 +1,7 @@
-// rsi campaign on a component case: the full-order reference over the
-// case's rubbing.campaign.full_revolutions and every reduced run of
-// rubbing.campaign.runs over rubbing.revolutions, each at its own stable
-// step and sampled at the same instants (rubbing_run.hpp), with the error
-// norms of the response dof and of the contact forces over the reference's
-// window -> convergence.csv, runs/<name>/{history.csv,summary.json} and,
+// rsi campaign on a component case: the runs of its rubbing.campaign
+// (campaign/rubbing_campaign.hpp: the list, each run, the error norms) ->
+// convergence.csv, runs/<name>/{history.csv,summary.json}, rubbing.json and,
 // unless --no-report, the report (reports/make_rubbing_report.py).
-//
-// Norms over the rows j of the window (the reference's rows), x the
-// response dof, Lambda the normal multipliers of every contact:
-//   e2_response = ||x - x_ref||_2 / ||x_ref||_2,
-//   einf_response = max_j |x_j - x_ref,j| / max_j |x_ref,j|,
-//   e2_lambda = ||Lambda - Lambda_ref||_F / ||Lambda_ref||_F,
-//   einf_lambda = max |Lambda - Lambda_ref| / max |Lambda_ref|.
 // Runs one after the other (--jobs 1): their wall times are the cost table.
 
 #include <algorithm>
@@ -21,57 +11,22 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
+#include "campaign_options.hpp"
 #include "component_history_file.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
+#include "output_sets.hpp"
 #include "reduced_basis.hpp"
 #include "report_script.hpp"
-#include "rubbing_run.hpp"
+#include "rubbing_campaign.hpp"
 #include "run_outputs.hpp"
 #include "stream_text.hpp"
 #include "terminal_progress.hpp"
 #include "staged_output.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 namespace {
-
-struct RubbingCampaignRun {
-  std::string method;
-  int modes = 0;
-  RubbingRun run;
-  std::vector<double> response;
-  std::vector<Eigen::VectorXd> lambda_n;
-  std::string error; ///< why the run could not be made
-};
-
-struct ErrorNorms {
-  double e2_response = NAN, einf_response = NAN, e2_lambda = NAN, einf_lambda = NAN;
-};
-
-ErrorNorms error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref) {
-  const size_t n = std::min(r.response.size(), ref.response.size());
-  double dx2 = 0, x2 = 0, dxi = 0, xi = 0, dl2 = 0, l2 = 0, dli = 0, li = 0;
-  for (size_t j = 0; j < n; ++j) {
-    const double d = r.response[j] - ref.response[j];
-    dx2 += d * d;
-    x2 += ref.response[j] * ref.response[j];
-    dxi = std::max(dxi, std::abs(d));
-    xi = std::max(xi, std::abs(ref.response[j]));
-    const Eigen::VectorXd dl = r.lambda_n[j] - ref.lambda_n[j];
-    dl2 += dl.squaredNorm();
-    l2 += ref.lambda_n[j].squaredNorm();
-    dli = std::max(dli, dl.cwiseAbs().maxCoeff());
-    li = std::max(li, ref.lambda_n[j].cwiseAbs().maxCoeff());
-  }
-  ErrorNorms e;
-  if (n == 0) return e;
-  e.e2_response = std::sqrt(dx2 / x2);
-  e.einf_response = dxi / xi;
-  e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;
-  e.einf_lambda = li > 0 ? dli / li : NAN;
-  return e;
-}
 
 /// The set-up the report reads (rubbing.json).
 std::string rubbing_json(const RubbingModel& model) {
@@ -100,46 +55,29 @@ std::string rubbing_json(const RubbingModel& model) {
   return j.dump(2) + "\n";
 }
 
-std::string run_name(const RubbingCampaignRun& r) {
-  return r.method == "full" ? "full" : r.method + "-" + std::to_string(r.modes);
-}
-
 /// Runs one entry into DIR/runs/<name>/ (history streamed, committed at the end).
-void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, double revolutions,
-               const std::string& dir, StagedOutput& output) {
+void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, const std::string& dir,
+               StagedOutput& output) {
   output.make(dir);
   ComponentHistoryFile history(dir + "/history.csv", model.response_name,
                                static_cast<int>(model.contact_nodes.size()));
-  const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
+  const ComponentRowSink sink = [&history](const HistoryRow& row, double response) {
     history.append(row, response);
-    entry.response.push_back(response);
-    entry.lambda_n.push_back(row.lambda);
   };
-  RubbingRunOptions o;
-  o.method = entry.method;
-  o.modes = entry.modes;
-  o.revolutions = revolutions;
-  if (entry.method == "full") o.revolutions_key = "rubbing.campaign.full_revolutions";
-  o.checkpoint = throw_if_interrupted;
-  o.progress = terminal_progress(run_name(entry));
-  try {
-    entry.run = run_rubbing(model, o, sink);
-  } catch (const ReductionError& e) {
-    finish_terminal_progress(o.progress);
-    entry.error = e.what();
-    return;
-  }
-  finish_terminal_progress(o.progress);
+  const std::function<void(double)> progress =
+      terminal_progress(rubbing_campaign_run_name(entry));
+  const bool ran = run_rubbing_campaign_entry(model, entry, sink, throw_if_interrupted, progress);
+  finish_terminal_progress(progress);
+  if (!ran) return; // a refused reduction: nothing written
   throw_if_interrupted();
   history.commit();
   write_text_file(dir + "/summary.json", summary_json(entry.run.summary));
-  if (!entry.run.summary.completed) entry.error = entry.run.summary.status;
 }
 
 } // namespace
 
-int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
-                         StagedOutput& output) {
+int campaign_component_case(const CampaignOptions& options, const ComponentCase& c,
+                            StagedOutput& output) {
   if (!c.rubbing || c.rubbing->campaign.empty())
     throw UsageError(c.case_path + ": key 'rubbing.campaign': missing, nothing to run (a "
                                    "component case's campaign lists its reduced runs there)");
@@ -152,14 +90,9 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
   const RubbingModel model = load_rubbing_model(c, options.load);
   const RubbingSetup& setup = model.setup;
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
-  std::vector<RubbingCampaignRun> runs;
-  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}});
-  for (const RubbingRuns& item : setup.campaign)
-    for (int modes : item.modes)
-      runs.push_back({item.method, modes, {}, {}, {}, {}});
+  std::vector<RubbingCampaignRun> runs = rubbing_campaign_runs(setup);
   for (RubbingCampaignRun& r : runs) {
-    const double revolutions = r.method == "full" ? setup.full_revolutions : setup.revolutions;
-    run_entry(model, r, revolutions, stage + "/runs/" + run_name(r), output);
+    run_entry(model, r, stage + "/runs/" + rubbing_campaign_run_name(r), output);
     const RunSummary& s = r.run.summary;
     std::printf("%-8s %4d: %s; dt %.4e s (limit %.4e s), %d steps, basis %.2f s, "
                 "integration %.3f s\n",
@@ -178,7 +111,8 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
          "first_mode_hz\n";
   for (const RubbingCampaignRun& r : runs) {
     const RunSummary& s = r.run.summary;
-    const ErrorNorms e = reference && r.error.empty() ? error_norms(r, *reference) : ErrorNorms{};
+    const RubbingErrorNorms e =
+        reference && r.error.empty() ? rubbing_error_norms(r, *reference) : RubbingErrorNorms{};
     const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes.size();
     csv << r.method << ',' << r.modes << ',' << s.n_dofs << ',' << s.dt << ',' << s.critical_dt
         << ',' << r.run.step_limit << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
@@ -215,11 +149,11 @@ int run_rubbing_campaign(const CampaignOptions& options, const ComponentCase& c,
     output.announce("report: " + options.out + "/report.md\n");
   }
   if (all_ok) return 0;
-  // Exit 3: one error line (issue 13, class 8), each failed run on its own line.
+  // Exit 3: one error line, each failed run on its own line.
   long n_failed = 0;
   for (const RubbingCampaignRun& r : runs)
     if (!r.error.empty()) {
-      std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", run_name(r).c_str(),
+      std::fprintf(stderr, "rsi: campaign run %s failed: %s\n", rubbing_campaign_run_name(r).c_str(),
                    r.error.c_str());
       ++n_failed;
     }

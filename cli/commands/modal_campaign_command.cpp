@@ -11,7 +11,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+#include "command_options.hpp"
+#include "usage_error.hpp"
 #include "component_input.hpp"
 #include "critical_step.hpp"
 #include "interruption.hpp"
@@ -26,6 +30,40 @@
 namespace rsi {
 namespace {
 
+struct ModalCampaignOptions {
+  std::string case_path;
+  std::string out = "out/modal-campaign";
+  bool report = true; ///< run reports/make_modal_report.py at the end
+  ComponentLoadOptions load;
+};
+
+class ModalCampaignCommand : public Command {
+public:
+  explicit ModalCampaignCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  ModalCampaignOptions m_options;
+};
+
+ModalCampaignCommand::ModalCampaignCommand(CLI::App& app)
+    : Command(*app.add_subcommand(
+          "modal-campaign",
+          "Modal convergence of every reduction of a component (no contact): reduced against full "
+          "frequencies -> DIR/{modal_convergence.csv,modal_errors.csv,modal_report.md}")) {
+  ModalCampaignOptions& modal_campaign = m_options;
+  m_command.add_option("case", modal_campaign.case_path, "component case file (JSON)")
+      ->required()
+      ->check(case_file());
+  m_command.add_option("--out", modal_campaign.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  m_command.add_flag("!--no-report", modal_campaign.report,
+                     "write the tables only, not modal_report.md and its figure");
+  add_component_options(m_command, modal_campaign.load);
+}
+
+
 /// Largest mode count of every method on a component of n dofs, n_b on the
 /// boundary: CB keeps at most the interior dofs, CCM and MacNeal at most the
 /// dofs minus the boundary dofs (craig_bampton.hpp, craig_chang_martinez.hpp).
@@ -39,7 +77,8 @@ double hz(double omega_squared) {
 
 } // namespace
 
-int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output) {
+int ModalCampaignCommand::run(StagedOutput& output) {
+  const ModalCampaignOptions& options = m_options;
   const ComponentInput input = load_component_input(options.case_path, "", options.load);
   if (!input.component_case || !input.component_case->modal_campaign)
     throw UsageError(input.case_source +
@@ -161,6 +200,10 @@ int run_modal_campaign(const ModalCampaignOptions& options, StagedOutput& output
     output.announce("report: " + options.out + "/modal_report.md\n");
   }
   return 0;
+}
+
+std::unique_ptr<Command> add_modal_campaign_command(CLI::App& app) {
+  return std::make_unique<ModalCampaignCommand>(app);
 }
 
 } // namespace rsi

@@ -4,9 +4,13 @@
 #include <cstdio>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+#include "command_options.hpp"
+#include "usage_error.hpp"
 #include "bladed_disk.hpp"
 #include "casing.hpp"
-#include "commands.hpp"
 #include "component_input.hpp"
 #include "output_files.hpp"
 #include "paper_components.hpp"
@@ -15,6 +19,35 @@
 
 namespace rsi {
 namespace {
+
+struct ExportOptions {
+  std::string case_path;
+  std::string out = "out/export";
+  ComponentLoadOptions load;
+};
+
+class ExportCommand : public Command {
+public:
+  explicit ExportCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  ExportOptions m_options;
+};
+
+ExportCommand::ExportCommand(CLI::App& app)
+    : Command(*app.add_subcommand(
+          "export", "K.mtx, M.mtx, dofs.csv, nodes.csv of each component -> DIR/<component>/")) {
+  ExportOptions& export_options = m_options;
+  m_command.add_option("case", export_options.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  m_command.add_option("--out", export_options.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  add_component_options(m_command, export_options.load);
+}
+
 
 std::string dofs_csv(const DofMap& dofs) {
   std::ostringstream csv;
@@ -51,7 +84,8 @@ void write_component(const std::string& dir, const std::string& shown, const Com
 
 } // namespace
 
-int run_export(const ExportOptions& options, StagedOutput& output) {
+int ExportCommand::run(StagedOutput& output) {
+  const ExportOptions& options = m_options;
   std::vector<Component> components;
   ComponentInput first = load_component_input(options.case_path, "", options.load);
   const bool paper = !first.component_case.has_value();
@@ -63,6 +97,10 @@ int run_export(const ExportOptions& options, StagedOutput& output) {
   for (const Component& c : components)
     write_component(dir + "/" + c.name, options.out + "/" + c.name, c, output);
   return 0;
+}
+
+std::unique_ptr<Command> add_export_command(CLI::App& app) {
+  return std::make_unique<ExportCommand>(app);
 }
 
 } // namespace rsi

@@ -7,7 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "interruption.hpp"
+#include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
 #include "reduction.hpp"
 #include "rigid_surface_contact.hpp"
@@ -15,7 +15,6 @@
 #include "rubbing_run.hpp"
 #include "run_monitor.hpp"
 #include "run_outputs.hpp"
-#include "sweep_speeds_option.hpp"
 
 namespace rsi {
 namespace {
@@ -223,51 +222,9 @@ private:
 
 } // namespace
 
-std::unique_ptr<SweepPoints> component_sweep_points(const ComponentCase& c,
-                                                    const SweepOptions& options) {
-  for (const std::string& name : options.paper_run_options)
-    throw UsageError(name + ": only for the paper's case (a component's runs step at "
-                            "rubbing.step_safety of their own limit, on the whole casing); drop it");
-  if (!c.rubbing)
-    throw CaseError(c.case_path + ": key 'rubbing': missing (a component's sweep runs its "
-                                  "rubbing set-up at each speed; data/README.md)");
-  ComponentSweep sweep = c.sweep;
-  if (!sweep.present() && (options.speeds.empty() || options.method.empty()))
-    throw UsageError(c.case_path + ": key 'sweep': missing; a component's sweep needs its "
-                                   "speeds and runs (data/README.md), or --speeds and --method");
-  if (!sweep.present()) sweep.revolutions = c.rubbing->revolutions;
-  if (!options.speeds.empty()) {
-    sweep.speeds = parse_speeds_option(options.speeds, SpeedSign::any);
-    for (double w : sweep.speeds) {
-      if (w == 0.0)
-        throw UsageError("--speeds: a component's speeds must be nonzero (a rubbing run needs a "
-                         "rotation), got '" + options.speeds + "'");
-      if ((w > 0.0) != (sweep.speeds.front() > 0.0))
-        throw UsageError("--speeds: a component's speeds must all have one sign (the rotation's "
-                         "direction), got '" + options.speeds + "'");
-    }
-  }
-  if (!options.method.empty()) {
-    const std::string& m = options.method;
-    if (m != "full" && m != "cb" && m != "ccm" && m != "guyan" && m != "macneal")
-      throw UsageError("--method: a component case takes full, cb, ccm, guyan or macneal, got '" +
-                       m + "'");
-    if (m != "full" && m != "guyan" && options.modes < 1)
-      throw UsageError("--modes: --method " + m + " needs its mode count (>= 1)");
-    sweep.runs = {{m, m == "full" ? 0 : options.modes}};
-  }
-  const RubbingSetup& setup = *c.rubbing;
-  const double rows_after = std::floor((sweep.revolutions - sweep.transient_revolutions) *
-                                       setup.steps_per_revolution / setup.output_every);
-  if (rows_after < 16)
-    throw CaseError(c.case_path + ": key 'sweep.transient_revolutions': " +
-                    std::to_string(static_cast<long>(rows_after)) +
-                    " history rows after it, fewer than the 16 the spectrum needs (sweep."
-                    "revolutions x rubbing.steps_per_revolution / rubbing.output_every)");
-  RubbingModel model = load_rubbing_model(c, options.load);
+std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
+                                                    const std::string& where) {
   std::vector<PreparedRun> runs(sweep.runs.size());
-  const std::string where = options.method.empty() ? c.case_path + ": key 'sweep.runs': run "
-                                                   : "--method " + options.method + ": ";
   for (size_t j = 0; j < runs.size(); ++j) {
     PreparedRun& r = runs[j];
     r.run = sweep.runs[j];

@@ -5,7 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
+#include <CLI/CLI.hpp>
+
+#include "command.hpp"
+#include "command_options.hpp"
+#include "usage_error.hpp"
 #include "component_input.hpp"
 #include "critical_step.hpp"
 #include "output_files.hpp"
@@ -15,8 +19,49 @@
 #include "terminal_progress.hpp"
 
 namespace rsi {
+namespace {
 
-int run_reduce(const ReduceOptions& options, StagedOutput& output) {
+struct ReduceOptions {
+  std::string case_path;
+  std::string method;
+  int modes = 0;
+  std::string out = "out/reduce";
+  ComponentLoadOptions load;
+};
+
+class ReduceCommand : public Command {
+public:
+  explicit ReduceCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  ReduceOptions m_options;
+};
+
+ReduceCommand::ReduceCommand(CLI::App& app)
+    : Command(*app.add_subcommand(
+          "reduce", "Reduction basis of a component -> DIR/{K.mtx,M.mtx,T.mtx,basis.json}")) {
+  ReduceOptions& reduce = m_options;
+  m_command.add_option("case", reduce.case_path, "case file (JSON)")
+      ->required()
+      ->check(case_file());
+  m_command.add_option("--method", reduce.method, "cb, ccm, guyan or macneal")
+      ->required()
+      ->check(one_of({"cb", "ccm", "guyan", "macneal"}));
+  m_command
+      .add_option("--modes", reduce.modes, "fixed-interface (cb) or free (ccm, macneal) modes")
+      ->capture_default_str()
+      ->check(integer_in(0, 1000000000, modes_allowed));
+  m_command.add_option("--out", reduce.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  add_component_options(m_command, reduce.load);
+}
+
+} // namespace
+
+int ReduceCommand::run(StagedOutput& output) {
+  const ReduceOptions& options = m_options;
   if (options.method != "cb" && options.method != "ccm" && options.method != "guyan" &&
       options.method != "macneal")
     throw UsageError("--method: must be cb, ccm, guyan or macneal, got '" + options.method + "'");
@@ -67,6 +112,10 @@ int run_reduce(const ReduceOptions& options, StagedOutput& output) {
               basis.build_seconds, peak_memory_bytes() / 1048576.0);
   output.announce("wrote " + options.out + "/{K.mtx,M.mtx,T.mtx,basis.json}\n");
   return 0;
+}
+
+std::unique_ptr<Command> add_reduce_command(CLI::App& app) {
+  return std::make_unique<ReduceCommand>(app);
 }
 
 } // namespace rsi

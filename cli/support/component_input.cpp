@@ -9,7 +9,7 @@
 #include "bladed_disk.hpp"
 #include "case_json.hpp"
 #include "casing.hpp"
-#include "commands.hpp"
+#include "usage_error.hpp"
 #include "nodal_diameter.hpp"
 #include "paper_components.hpp"
 

@@ -6,11 +6,9 @@
 #include <stdexcept>
 
 #include "casing.hpp"
-#include "casing_memory.hpp"
+#include "interruption_flag.hpp"
 #include "critical_step.hpp"
-#include "failure_remedies.hpp"
 #include "interaction_lines.hpp"
-#include "interruption.hpp"
 #include "modal_analysis.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
@@ -18,7 +16,6 @@
 #include "run_outputs.hpp"
 #include "run_step.hpp"
 #include "sweep_indicators.hpp"
-#include "sweep_speeds_option.hpp"
 
 namespace rsi {
 namespace {
@@ -32,9 +29,8 @@ struct PreparedRun {
   double cost = 0.0; ///< expected steps x integrated coordinates a speed (the schedule's weight)
 };
 
-/// The run's name in sweep.csv: "full", or the campaign's "cb-44-dt-own".
 std::string run_name_of(const CampaignRun& run) {
-  return run.method == "full" ? "full" : run.name();
+  return sweep_run_name(run);
 }
 
 /// The case of one speed: the sweep's duration and damping.
@@ -70,7 +66,8 @@ std::string csv_row(double speed, const CampaignRun& run, const std::string& sta
 
 class PaperSweepPoints : public SweepPoints {
 public:
-  PaperSweepPoints(Case c, int disk_dofs) : m_case(std::move(c)), m_disk_dofs(disk_dofs) {}
+  PaperSweepPoints(Case c, int disk_dofs, RefusedStepMessage refused_step)
+      : m_case(std::move(c)), m_disk_dofs(disk_dofs), m_refused_step(std::move(refused_step)) {}
 
   const std::vector<double>& speeds() const override { return m_case.sweep.speeds; }
   int n_runs() const override { return static_cast<int>(m_case.sweep.runs.size()); }
@@ -131,15 +128,9 @@ public:
     } catch (const std::bad_alloc&) {
       throw; // out of memory ends the sweep, not one speed
     } catch (const StabilityError& e) {
-      // A sweep has no --force: the remedy is the key that set the step.
+      // The caller says what sets the step (a sweep has no --force).
       out.row = csv_row(speed, r.run, "failed", nullptr);
-      out.error = without_force(
-          std::string(e.what()),
-          r.run.step.kind == StepRule::Kind::given
-              ? "a smaller time_step of run " + run_name_of(r.run) +
-                    " (sweep.runs or --time-step), dividing the output interval, or \"own\"; a "
-                    "sweep has no --force"
-              : "time.step; a sweep has no --force");
+      out.error = m_refused_step(r.run, e);
     } catch (const std::exception& e) {
       out.row = csv_row(speed, r.run, "failed", nullptr);
       out.error = e.what();
@@ -207,37 +198,19 @@ private:
 
   Case m_case;
   int m_disk_dofs = 0;
+  RefusedStepMessage m_refused_step;
   std::vector<PreparedRun> m_runs;
 };
 
 } // namespace
 
-std::unique_ptr<SweepPoints> paper_sweep_points(Case c, const SweepOptions& options, int jobs) {
-  if (!c.sweep.present())
-    throw UsageError(c.source + ": key 'sweep': missing; a sweep needs its duration, transient, "
-                                "damping and runs (data/README.md)");
-  if (!options.speeds.empty())
-    c.sweep.speeds = parse_speeds_option(options.speeds, SpeedSign::non_negative);
-  if (!options.method.empty()) {
-    CampaignRun one;
-    one.method = options.method;
-    one.modes = options.modes;
-    one.selection = options.selection;
-    one.casing_modes = options.casing_modes;
-    one.step = parse_step_option(options.time_step, options.step_safety);
-    c.sweep.runs = {one};
-  }
-  const int disk_dofs =
-      check_runs_against_model(c, c.sweep.runs, c.source + ": key 'sweep.runs'", jobs);
-  const Casing casing = assemble_casing(c);
-  if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
-                  [](const CampaignRun& r) { return r.method == "full"; }))
-    check_case_step_bound(c, casing, "sweep");
-  // The reduced runs' dense casing matrices, one a thread (casing_memory.hpp).
-  if (std::any_of(c.sweep.runs.begin(), c.sweep.runs.end(),
-                  [](const CampaignRun& r) { return r.method != "full"; }))
-    check_dense_casing_fits(c, casing.n_dofs(), jobs);
-  return std::make_unique<PaperSweepPoints>(std::move(c), disk_dofs);
+std::string sweep_run_name(const CampaignRun& run) {
+  return run.method == "full" ? "full" : run.name();
+}
+
+std::unique_ptr<SweepPoints> paper_sweep_points(Case c, int disk_dofs,
+                                                RefusedStepMessage refused_step) {
+  return std::make_unique<PaperSweepPoints>(std::move(c), disk_dofs, std::move(refused_step));
 }
 
 } // namespace rsi

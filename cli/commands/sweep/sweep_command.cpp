@@ -1,6 +1,6 @@
-// rsi sweep: the case's runs over its rotation speeds (issue 15), each run
+// rsi sweep: the case's runs over its rotation speeds, each run
 // reduced to a row of indicators, alone on --jobs threads or over MPI ranks
-// (cli/mpi_session.hpp). The kind of case (the paper's bladed disk in its
+// (cli/support/mpi_session.hpp). The kind of case (the paper's bladed disk in its
 // flexible casing, or a component rubbing on its rigid casing) is read
 // once, where the case is loaded (sweep_points_of): from there on the
 // command and the driver (sweep/sweep_driver.hpp) see only its SweepPoints.
@@ -12,22 +12,115 @@
 #include <cstdlib>
 #include <memory>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "commands.hpp"
-#include "component_sweep_points.hpp"
+#include "command.hpp"
+#include "command_options.hpp"
+
 #include "interruption.hpp"
 #include "mpi_session.hpp"
 #include "output_files.hpp"
 #include "output_sets.hpp"
-#include "paper_sweep_points.hpp"
+#include "sweep_case_options.hpp"
 #include "report_script.hpp"
 #include "run_monitor.hpp"
 #include "staged_output.hpp"
 #include "sweep_driver.hpp"
+#include "sweep_options.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 namespace {
+
+class SweepCommand : public Command {
+public:
+  explicit SweepCommand(CLI::App& app);
+  int run(StagedOutput& output) override;
+
+private:
+  /// The run options describe the one --method run: refused without it,
+  /// and for the full reference.
+  void check_option_rules();
+
+  SweepOptions m_options;
+  CLI::Option* m_speeds = nullptr;
+  CLI::Option* m_modes = nullptr;
+  CLI::Option* m_step = nullptr;
+  CLI::Option* m_safety = nullptr;
+  CLI::Option* m_casing = nullptr;
+  CLI::Option* m_selection = nullptr;
+};
+
+SweepCommand::SweepCommand(CLI::App& app)
+    : Command(*app.add_subcommand(
+          "sweep", "The case's sweep runs over rotation speeds -> DIR/sweep.csv, "
+                   "DIR/interaction_lines.csv, DIR/sweep_report.md; under mpirun the speeds are "
+                   "shared by the ranks")) {
+  SweepOptions& sweep = m_options;
+  m_command.add_option("case", sweep.case_path, "case file (JSON) with a \"sweep\" object")
+      ->required()
+      ->check(case_file());
+  m_command.add_option("--out", sweep.out, "output directory")
+      ->capture_default_str()
+      ->check(nonempty_path());
+  m_speeds = m_command.add_option(
+      "--speeds", sweep.speeds,
+      "FROM:TO:COUNT or W1,W2,... [rad/s] in place of the case's sweep.speeds");
+  m_command
+      .add_option("--method", sweep.method,
+                  "one run in place of the case's sweep.runs: full, cb, ccm, guyan, or "
+                  "macneal (a component case only)")
+      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
+  m_modes = m_command.add_option("--modes", sweep.modes, "with --method cb, ccm or macneal: modes kept")
+                ->check(integer_in(0, 1000000000, modes_allowed));
+  m_step = m_command.add_option("--time-step", sweep.time_step,
+                                "with a reduced --method: case, own or a step dividing the output "
+                                "interval");
+  m_safety = m_command
+                 .add_option("--step-safety", sweep.step_safety,
+                             "with --time-step own: the fraction of 2/omega_max, in (0, 1)")
+                 ->check(CLI::Range(0.0, 1.0));
+  m_casing = m_command
+                 .add_option("--casing-modes", sweep.casing_modes,
+                             "with a reduced --method: 0 (the full casing) or N_c casing modes")
+                 ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
+  m_selection = m_command
+                    .add_option("--selection", sweep.selection,
+                                "with a reduced --method: lowest, families, forced or participation")
+                    ->check(one_of({"lowest", "families", "forced", "participation"}));
+  m_command.add_option("--jobs", sweep.jobs,
+                       "threads a process (default 2 alone, 1 a rank under mpirun)")
+      ->check(integer_in(1, 64, "an integer in [1, 64]"));
+  m_command.add_flag("--quiet", sweep.quiet, "no progress lines on stderr");
+  m_command.add_flag("!--no-report", sweep.report,
+                     "skip the report (reports/make_sweep_report.py or, for a component case, "
+                     "make_component_sweep_report.py; python3 + matplotlib)");
+  add_component_options(m_command, sweep.load);
+}
+
+void SweepCommand::check_option_rules() {
+  SweepOptions& sweep = m_options;
+  for (const CLI::Option* o : {m_modes, m_step, m_safety, m_casing, m_selection}) {
+    if (o->count() > 0 && sweep.method.empty())
+      throw UsageError(o->get_name() +
+                       ": only with --method (it describes that one run); add "
+                       "--method or drop it");
+    if (o->count() > 0 && sweep.method == "full")
+      throw UsageError(o->get_name() +
+                       ": only for a reduced --method (the full reference runs the whole "
+                       "model at time.step); drop it");
+  }
+  if (m_safety->count() > 0 && sweep.time_step != "own")
+    throw UsageError("--step-safety: only with --time-step own; drop it");
+  if (m_speeds->count() > 0 && sweep.speeds.empty())
+    throw UsageError("--speeds: FROM:TO:COUNT or W1,W2,... [rad/s], 1 to 100000 speeds, "
+                     "got ''");
+  sweep.paper_run_options.clear();
+  for (const CLI::Option* o : {m_casing, m_selection, m_step, m_safety})
+    if (o->count() > 0) sweep.paper_run_options.push_back(o->get_name());
+}
+
 
 /// The MPI session as the sweep driver sees its ranks.
 class MpiRanks : public SweepRanks {
@@ -63,14 +156,14 @@ private:
 std::unique_ptr<SweepPoints> sweep_points_of(const SweepOptions& options, int jobs) {
   const nlohmann::json document = read_case_document(options.case_path);
   if (is_component_case(document))
-    return component_sweep_points(parse_component_case(document, options.case_path), options);
+    return component_case_sweep(parse_component_case(document, options.case_path), options);
   if (!options.load.source_override.empty())
     throw UsageError("--source: only for a component case; " + options.case_path +
                      " is the paper's case");
   if (options.method == "macneal")
     throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
                      "component cases), got 'macneal'");
-  return paper_sweep_points(parse_case(document, options.case_path), options, jobs);
+  return paper_case_sweep(parse_case(document, options.case_path), options, jobs);
 }
 
 double median(std::vector<double> x) {
@@ -82,7 +175,9 @@ double median(std::vector<double> x) {
 
 } // namespace
 
-int run_sweep(const SweepOptions& options, StagedOutput& output) {
+int SweepCommand::run(StagedOutput& output) {
+  check_option_rules();
+  const SweepOptions& options = m_options;
   MpiSession mpi;
   // Declared after `mpi`: an error or a signal removes the staged output
   // before MPI_Finalize, which waits for the other ranks (mpirun kills a
@@ -169,6 +264,10 @@ int run_sweep(const SweepOptions& options, StagedOutput& output) {
     return 3;
   }
   return 0;
+}
+
+std::unique_ptr<Command> add_sweep_command(CLI::App& app) {
+  return std::make_unique<SweepCommand>(app);
 }
 
 } // namespace rsi

@@ -1,9 +1,9 @@
 #pragma once
 // The sweep of a component case (a 3D blade rubbing on its rigid casing,
 // rubbing_run.hpp): the rubbing run at each speed of its "sweep" object
-// (or --speeds), over sweep.revolutions, for each of its runs (full, or a
-// reduced method and mode count: cb, ccm, guyan, macneal); each history
-// reduced to a row of indicators (sweep/rubbing_indicators.hpp).
+// (or the caller's speeds), over sweep.revolutions, for each of its runs
+// (full, or a reduced method and mode count: cb, ccm, guyan, macneal);
+// each history reduced to a row of indicators (sweep/rubbing_indicators.hpp).
 //
 // Beside sweep.csv, interaction_lines.csv: for each run, the blade's
 // lowest natural frequencies f_k (its tip free, not spinning: the reduced
@@ -15,16 +15,19 @@
 // listed for the map's reading (a constant gap forces at none).
 
 #include <memory>
+#include <string>
 
-#include "commands.hpp"
+#include "component_case.hpp"
+#include "rubbing_run.hpp"
 #include "sweep_points.hpp"
 
 namespace rsi {
 
-/// Checks the case's "sweep" object (or the options in place of it) and
-/// loads the model and the reduced bases; throws UsageError, CaseError,
-/// ImportError or ReductionError (exit 2) before anything is written.
-std::unique_ptr<SweepPoints> component_sweep_points(const ComponentCase& c,
-                                                    const SweepOptions& options);
+/// The runs of `sweep` (its speeds, runs and revolutions set) on `model`:
+/// builds each reduced run's basis once for every speed, and the natural
+/// frequencies. A refused reduction throws ReductionError prefixed by
+/// `where` (the key or option that lists the runs) and the run's name.
+std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
+                                                    const std::string& where);
 
 } // namespace rsi

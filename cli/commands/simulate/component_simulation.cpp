@@ -1,22 +1,24 @@
 // rsi simulate on a component case: the rubbing run of its "rubbing" object
-// (cli/rubbing_run.hpp) -> history.csv, summary.json.
+// (campaign/rubbing_run.hpp) -> history.csv, summary.json.
 
 #include <cstdio>
 #include <string>
 
-#include "commands.hpp"
 #include "component_history_file.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "rubbing_run.hpp"
+#include "output_sets.hpp"
 #include "run_outputs.hpp"
+#include "simulate_options.hpp"
 #include "terminal_progress.hpp"
 #include "staged_output.hpp"
+#include "usage_error.hpp"
 
 namespace rsi {
 
-int run_component_simulate(const SimulateOptions& options, const ComponentCase& c,
-                           StagedOutput& output) {
+int simulate_component_case(const SimulateOptions& options, const ComponentCase& c,
+                            StagedOutput& output) {
   if (options.full_field)
     throw UsageError("--full-field: only for the paper's case (a component case writes the "
                      "response dof of its 'rubbing.response')");

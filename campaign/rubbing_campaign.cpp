@@ -1,0 +1,70 @@
+#include "rubbing_campaign.hpp"
+
+#include <algorithm>
+
+namespace rsi {
+
+std::vector<RubbingCampaignRun> rubbing_campaign_runs(const RubbingSetup& setup) {
+  std::vector<RubbingCampaignRun> runs;
+  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}});
+  for (const RubbingRuns& item : setup.campaign)
+    for (int modes : item.modes)
+      runs.push_back({item.method, modes, {}, {}, {}, {}});
+  return runs;
+}
+
+std::string rubbing_campaign_run_name(const RubbingCampaignRun& r) {
+  return r.method == "full" ? "full" : r.method + "-" + std::to_string(r.modes);
+}
+
+bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& entry,
+                                const ComponentRowSink& sink,
+                                const std::function<void()>& checkpoint,
+                                const std::function<void(double)>& progress) {
+  const ComponentRowSink keep = [&](const HistoryRow& row, double response) {
+    sink(row, response);
+    entry.response.push_back(response);
+    entry.lambda_n.push_back(row.lambda);
+  };
+  RubbingRunOptions o;
+  o.method = entry.method;
+  o.modes = entry.modes;
+  o.revolutions = entry.method == "full" ? model.setup.full_revolutions : model.setup.revolutions;
+  if (entry.method == "full") o.revolutions_key = "rubbing.campaign.full_revolutions";
+  o.checkpoint = checkpoint;
+  o.progress = progress;
+  try {
+    entry.run = run_rubbing(model, o, keep);
+  } catch (const ReductionError& e) {
+    entry.error = e.what();
+    return false;
+  }
+  if (!entry.run.summary.completed) entry.error = entry.run.summary.status;
+  return true;
+}
+
+RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref) {
+  const size_t n = std::min(r.response.size(), ref.response.size());
+  double dx2 = 0, x2 = 0, dxi = 0, xi = 0, dl2 = 0, l2 = 0, dli = 0, li = 0;
+  for (size_t j = 0; j < n; ++j) {
+    const double d = r.response[j] - ref.response[j];
+    dx2 += d * d;
+    x2 += ref.response[j] * ref.response[j];
+    dxi = std::max(dxi, std::abs(d));
+    xi = std::max(xi, std::abs(ref.response[j]));
+    const Eigen::VectorXd dl = r.lambda_n[j] - ref.lambda_n[j];
+    dl2 += dl.squaredNorm();
+    l2 += ref.lambda_n[j].squaredNorm();
+    dli = std::max(dli, dl.cwiseAbs().maxCoeff());
+    li = std::max(li, ref.lambda_n[j].cwiseAbs().maxCoeff());
+  }
+  RubbingErrorNorms e;
+  if (n == 0) return e;
+  e.e2_response = std::sqrt(dx2 / x2);
+  e.einf_response = dxi / xi;
+  e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;
+  e.einf_lambda = li > 0 ? dli / li : NAN;
+  return e;
+}
+
+} // namespace rsi
