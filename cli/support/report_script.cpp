@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <vector>
 
 #include <fcntl.h>
@@ -43,6 +44,17 @@ int run_report_script(const std::string& script, const std::string& dir) {
   } while (waited < 0 && errno == EINTR);
   if (waited != pid) return 127;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+bool write_report(const std::string& script, const std::string& stage, const std::string& out) {
+  std::fflush(stdout); // the command's table before the script's own lines
+  const int status = run_report_script(script, stage);
+  if (status == 0) return true;
+  std::fprintf(stderr,
+               "rsi: error: the report generator %s/%s failed (status %d); nothing was "
+               "written to --out %s; fix it or use --no-report\n",
+               RSI_REPORTS_DIR, script.c_str(), status, out.c_str());
+  return false;
 }
 
 } // namespace rsi

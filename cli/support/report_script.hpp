@@ -11,4 +11,9 @@ namespace rsi {
 /// discarded, its stderr kept); its exit status (127 if it cannot be started).
 int run_report_script(const std::string& script, const std::string& dir);
 
+/// Runs `script` on the staged folder `stage` of a command's --out `out`;
+/// false if it fails, with the one `rsi: error:` line printed: the command
+/// then exits 1 and publishes nothing (staged_output.hpp), --out stays as it was.
+bool write_report(const std::string& script, const std::string& stage, const std::string& out);
+
 } // namespace rsi

@@ -262,16 +262,7 @@ int CampaignCommand::campaign_paper_case(const Case& c, StagedOutput& output) co
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const PaperCampaignJob& r) { return r.error.empty(); });
   if (options.report) {
-    std::fflush(stdout); // the table before the script's own lines
-    const int status = run_report_script("make_campaign_report.py", stage);
-    if (status != 0) {
-      // Exit 1 publishes nothing (staged_output.hpp): --out stays as it was.
-      std::fprintf(stderr,
-                   "rsi: error: the report generator %s/make_campaign_report.py failed (status "
-                   "%d); nothing was written to --out %s; fix it or use --no-report\n",
-                   RSI_REPORTS_DIR, status, options.out.c_str());
-      return 1;
-    }
+    if (!write_report("make_campaign_report.py", stage, options.out)) return 1;
     output.announce("report: " + options.out + "/report.md\n");
   }
   if (all_ok) return 0;

@@ -136,16 +136,7 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
   const bool all_ok = std::all_of(runs.begin(), runs.end(),
                                   [](const RubbingCampaignRun& r) { return r.error.empty(); });
   if (options.report) {
-    std::fflush(stdout);
-    const int status = run_report_script("make_rubbing_report.py", stage);
-    if (status != 0) {
-      // Exit 1 publishes nothing (staged_output.hpp): --out stays as it was.
-      std::fprintf(stderr,
-                   "rsi: error: the report generator %s/make_rubbing_report.py failed (status "
-                   "%d); nothing was written to --out %s; fix it or use --no-report\n",
-                   RSI_REPORTS_DIR, status, options.out.c_str());
-      return 1;
-    }
+    if (!write_report("make_rubbing_report.py", stage, options.out)) return 1;
     output.announce("report: " + options.out + "/report.md\n");
   }
   if (all_ok) return 0;

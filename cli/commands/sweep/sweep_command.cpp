@@ -244,16 +244,7 @@ int SweepCommand::run(StagedOutput& output) {
   output.announce("wrote " + options.out + "/sweep.csv, " + options.out + "/interaction_lines.csv, " +
                   options.out + "/sweep_summary.json\n");
   if (options.report) {
-    std::fflush(stdout);
-    const std::string script = points->report_script();
-    const int status = run_report_script(script, stage);
-    if (status != 0) {
-      std::fprintf(stderr,
-                   "rsi: error: the report generator %s/%s failed (status %d); nothing was "
-                   "written to --out %s; fix it or use --no-report\n",
-                   RSI_REPORTS_DIR, script.c_str(), status, options.out.c_str());
-      return 1;
-    }
+    if (!write_report(points->report_script(), stage, options.out)) return 1;
     output.announce("report: " + options.out + "/sweep_report.md\n");
   }
   if (!outcome.failures.empty()) {
