@@ -238,12 +238,20 @@ void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_fo
   start(casing_force, Eigen::VectorXd::Zero(m_kq.rows()));
 }
 
+void ReducedIntegrator::start() {
+  start_at(Eigen::VectorXd::Zero(m_kq.rows()));
+}
+
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
                               const Eigen::Ref<const Eigen::VectorXd>& q0) {
   if (q0.size() != m_kq.rows())
     throw std::invalid_argument("ReducedIntegrator::start: q0 has " + std::to_string(q0.size()) +
                                 " entries, the reduced model " + std::to_string(m_kq.rows()));
   set_force(casing_force);
+  start_at(q0);
+}
+
+void ReducedIntegrator::start_at(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   m_n = 0;
   m_q = q0;
   if (q0.isZero(0.0)) {

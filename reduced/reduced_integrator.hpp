@@ -123,6 +123,7 @@
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
+#include "reduced_stepper.hpp"
 #include "sparse_rows.hpp"
 
 namespace rsi {
@@ -141,7 +142,7 @@ struct ReducedDamping {
   RayleighDamping casing;      ///< alpha, beta >= 0 of the full casing
 };
 
-class ReducedIntegrator {
+class ReducedIntegrator final : public ReducedStepper {
 public:
   /// `contact` must outlive the integrator (not owned). Throws
   /// std::invalid_argument for a damping of the wrong size, negative or not
@@ -158,6 +159,8 @@ public:
   /// From rest under the casing force f0 at t = 0; f0 is held for the steps
   /// that follow until set_force changes it.
   void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
+  /// From rest under the casing force held (set_force; zero unless set).
+  void start() override;
   /// The same from rest at the bladed-disk coordinates q0 (a free vibration:
   /// q_{-1} = q0 - dt^2/2 M^-1 K^ q0, so (q_1 - q_{-1}) / (2 dt) = 0).
   void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
@@ -165,10 +168,10 @@ public:
   /// Holds F (n_c entries, [N]) as the casing force of every following step.
   void set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
   /// Step n -> n+1 under the held force F_n.
-  StepReport step();
+  StepReport step() override;
 
-  int step_index() const { return m_n; }
-  double time() const { return m_n * m_dt; }
+  int step_index() const override { return m_n; }
+  double time() const override { return m_n * m_dt; }
   /// The reduced coordinates q_n (formed from eta on the modal path).
   Eigen::VectorXd q() const;
   /// The boundary (tip) entries of q_n, (u_1, v_1, u_2, v_2, ...) in the
@@ -178,9 +181,9 @@ public:
   /// Whether the disk runs in modal coordinates (undamped and asked for).
   bool modal_bladed_disk() const { return m_modal_disk; }
   const Eigen::VectorXd& casing() const { return m_c; }
-  const Eigen::VectorXd& gap() const { return m_gap; }
+  const Eigen::VectorXd& gap() const override { return m_gap; }
   /// Normal multipliers lambda_n of the last step, one per tip [N].
-  const Eigen::VectorXd& lambda() const { return m_lambda; }
+  const Eigen::VectorXd& lambda() const override { return m_lambda; }
   /// Tangential multipliers of the last step, one per tip [N]: the friction
   /// force on the tip along +v (counter-clockwise); the casing takes the
   /// opposite. Coulomb: the solution's lambda_t; sliding_sign: the force the
@@ -201,12 +204,12 @@ public:
   const Eigen::MatrixXd& coulomb_w() const { return m_w; }
   const Eigen::VectorXd& coulomb_predicted() const { return m_rows; }
   const std::vector<TipContact>& predicted_tips() const { return m_predicted_kept; }
-  double energy() const;
-  double initial_energy() const { return m_initial_energy; }
-  double external_work() const { return m_external_work; }
-  double contact_work() const { return m_contact_work; }
+  double energy() const override;
+  double initial_energy() const override { return m_initial_energy; }
+  double external_work() const override { return m_external_work; }
+  double contact_work() const override { return m_contact_work; }
   /// W_damp up to step n-1 [J], >= 0 (0 undamped).
-  double damping_work() const { return m_damping_work; }
+  double damping_work() const override { return m_damping_work; }
   /// Flops of a contact-free, force-free step: the dense M^-1 K^ q (2 r^2),
   /// 4 r of vector updates, about 64 per tip for the gaps, sliding
   /// velocities and step report, and the casing's flops (below). Damped,
@@ -222,6 +225,8 @@ public:
   double casing_flops_per_step() const;
 
 private:
+  /// start(casing_force, q0) after its set_force.
+  void start_at(const Eigen::Ref<const Eigen::VectorXd>& q0);
   /// E_{n-1/2} of the reduced bladed disk in physical coordinates q.
   double disk_energy() const;
   /// E_{n-1/2} of the casing (modal coordinates when reduced).
