@@ -4,6 +4,9 @@
 #include <cmath>
 #include <string>
 
+#include "full_casing_part.hpp"
+#include "modal_casing_part.hpp"
+
 namespace rsi {
 
 namespace {
@@ -19,9 +22,6 @@ bool finite_non_negative(double x) {
 const std::string kReducedMassRemedy =
     "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: "
     "keep fewer modes (--modes, or the campaign's modes) or use another --method";
-const std::string kCasingMassRemedy =
-    "; change casing.section or material.density (the loader checks the casing's M: report "
-    "this case)";
 const std::string kStepRemedy =
     "; use a smaller step (time.step, or --time-step and the campaign's time_step of a reduced "
     "run)";
@@ -38,10 +38,6 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                      const ReducedModes* disk_modes)
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
-    , m_casing_damping(damping.casing)
-    , m_kc(casing.stiffness)
-    , m_kc_rows(m_kc)
-    , m_mc(casing.mass)
     , m_dt(dt)
     , m_mu(contact.friction_coefficient())
     , m_contact(contact)
@@ -65,10 +61,9 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
     m_q_damped = (m_cq_matrix.array() != 0.0).any();
     if (!m_q_damped) m_cq_matrix.resize(0, 0);
   }
-  if (!finite_non_negative(m_casing_damping.alpha) || !finite_non_negative(m_casing_damping.beta))
+  if (!finite_non_negative(damping.casing.alpha) || !finite_non_negative(damping.casing.beta))
     throw std::invalid_argument(
         "ReducedIntegrator: the casing's Rayleigh alpha and beta must be finite and >= 0");
-  m_c_damped = m_casing_damping.any();
 
   // A = M^ + dt/2 C^ (M^ undamped), factorized once.
   Eigen::MatrixXd a_q = m_mq;
@@ -111,67 +106,11 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
         Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
   }
 
-  const int nc = casing.n_dofs();
-  m_force = Eigen::VectorXd::Zero(nc);
   m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
-  m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
-  if (m_c_damped) m_c_delta = m_c_damping = Eigen::VectorXd::Zero(nc);
-  if (casing_basis != nullptr) {
-    if (casing_basis->shapes.rows() != nc || casing_basis->size() < 1 ||
-        casing_basis->omega_squared.size() != casing_basis->size())
-      throw std::invalid_argument("ReducedIntegrator: the casing basis must have " +
-                                  std::to_string(nc) + " rows (the casing's dofs), got " +
-                                  std::to_string(casing_basis->shapes.rows()));
-    m_modal_casing = true;
-    m_phi = casing_basis->shapes;
-    m_omega_squared = casing_basis->omega_squared;
-    m_modal_gamma = m_casing_damping.alpha + m_casing_damping.beta * m_omega_squared.array();
-    const Eigen::ArrayXd a = 1.0 + 0.5 * dt * m_modal_gamma.array();
-    if (!(a.minCoeff() > 0.0) || !a.allFinite())
-      throw ReducedIntegrationError(
-          "reduced integrator: the modal casing's 1 + dt/2 gamma_i is not positive (gamma_i = "
-          "alpha + beta omega_i^2 of damping.rayleigh); damping.rayleigh.alpha and beta must be "
-          ">= 0 and finite");
-    m_modal_a_inverse = a.inverse().matrix();
-    m_phi_scaled_t = m_modal_a_inverse.asDiagonal() * m_phi.transpose();
-    m_mc_inverse = m_phi * m_phi_scaled_t;
-    const int m = casing_basis->size();
-    m_force_modal = m_p = m_p_prev = m_p_next = m_dp = Eigen::VectorXd::Zero(m);
-    return;
-  }
-
-  // A_c = M_c + dt/2 (alpha M_c + beta K_c) (M_c undamped).
-  const Eigen::SparseMatrix<double> a_c =
-      m_c_damped
-          ? Eigen::SparseMatrix<double>((1.0 + 0.5 * dt * m_casing_damping.alpha) * casing.mass +
-                                        (0.5 * dt * m_casing_damping.beta) * casing.stiffness)
-          : casing.mass;
-  m_mc_factor.compute(a_c);
-  // Eigen's LDL^T flags only zero pivots: positive definite means every D_jj > 0.
-  if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
-    throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
-                                  (m_c_damped ? " plus dt/2 C_c" : "") +
-                                  " is not positive definite" + kCasingMassRemedy);
-  m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(nc, nc));
-  m_mc_order.resize(nc);
-  for (int i = 0; i < nc; ++i)
-    m_mc_order[i] =
-        m_mc_factor.permutationP().size() > 0 ? m_mc_factor.permutationP().indices()(i) : i;
-  m_mc_inverse_d = m_mc_factor.vectorD().cwiseInverse();
-}
-
-double ReducedIntegrator::casing_flops_per_step() const {
-  const auto n = static_cast<double>(m_kc.rows());
-  if (m_modal_casing) {
-    const auto m = static_cast<double>(m_phi.cols());
-    double flops = 2.0 * n * m + 10.0 * m;
-    if (m_c_damped) flops += 2.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 5.0 * n;
-    return flops;
-  }
-  const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
-  double flops = 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l + 5.0 * n;
-  if (m_c_damped) flops += 4.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 10.0 * n;
-  return flops;
+  if (casing_basis != nullptr)
+    m_casing = std::make_unique<ModalCasingPart>(casing, *casing_basis, dt, damping.casing);
+  else
+    m_casing = std::make_unique<FullCasingPart>(casing, dt, damping.casing);
 }
 
 double ReducedIntegrator::flops_per_step() const {
@@ -185,7 +124,7 @@ double ReducedIntegrator::flops_per_step() const {
 }
 
 double ReducedIntegrator::energy() const {
-  return casing_energy() + (m_modal_disk ? 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
+  return m_casing->energy() + (m_modal_disk ? 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
                                                0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta))
                                          : disk_energy());
 }
@@ -193,17 +132,6 @@ double ReducedIntegrator::energy() const {
 double ReducedIntegrator::disk_energy() const {
   const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
   return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q);
-}
-
-double ReducedIntegrator::casing_energy() const {
-  // Modal casing: c = Phi p with Phi^T M_c Phi = I and Phi^T K_c Phi =
-  // diag(omega^2) (casing_basis.hpp), so the same E_{n-1/2} in O(N_c), and
-  // the one of the equations the integrator advances (diag(omega^2) p).
-  if (m_modal_casing)
-    return 0.5 * ((m_p - m_p_prev) / m_dt).squaredNorm() +
-           0.5 * m_p_prev.dot(m_omega_squared.cwiseProduct(m_p));
-  const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
-  return 0.5 * vc.dot(m_mc * vc) + 0.5 * m_c_prev.dot(m_kc * m_c);
 }
 
 void ReducedIntegrator::tip_displacement(Eigen::VectorXd& out) const {
@@ -225,13 +153,11 @@ void ReducedIntegrator::form_boundary(const Eigen::VectorXd& eta, Eigen::VectorX
 }
 
 void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
-  if (casing_force.size() != m_force.size())
+  if (casing_force.size() != m_casing->n_dofs())
     throw std::invalid_argument("ReducedIntegrator::set_force: the force has " +
                                 std::to_string(casing_force.size()) + " entries, the casing " +
-                                std::to_string(m_force.size()) + " dofs");
-  m_force = casing_force;
-  m_force_zero = (m_force.array() == 0.0).all();
-  if (m_modal_casing) m_force_modal.noalias() = m_phi.transpose() * m_force;
+                                std::to_string(m_casing->n_dofs()) + " dofs");
+  m_casing->set_force(casing_force);
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
@@ -273,24 +199,8 @@ void ReducedIntegrator::start_at(const Eigen::Ref<const Eigen::VectorXd>& q0) {
     m_q.noalias() = m_psi * m_eta;
     m_q_prev.noalias() = m_psi * m_eta_prev;
   }
-  m_c = Eigen::VectorXd::Zero(m_kc.rows());
-  if (m_modal_casing) {
-    // At rest p_{-1} = dt^2/2 Phi^T F (the modal mass is I), c = Phi p.
-    m_p.setZero();
-    m_p_prev = 0.5 * m_dt * m_dt * m_force_modal;
-    m_c_prev.noalias() = m_phi * m_p_prev;
-  } else if (m_c_damped) {
-    // At rest c_{-1} = dt^2/2 M_c^-1 F with M_c itself (not A_c), so c_1 = c_{-1}.
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass(m_mc);
-    if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
-      throw ReducedIntegrationError(
-          "reduced integrator: the casing mass matrix is not positive definite" +
-          kCasingMassRemedy);
-    m_c_prev = 0.5 * m_dt * m_dt * mass.solve(m_force);
-  } else {
-    m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
-  }
-  m_contact.evaluate(m_q, m_q, m_c, m_c, m_dt, 0.0, m_tips);
+  m_casing->start();
+  m_contact.evaluate(m_q, m_q, m_casing->now(), m_casing->now(), m_dt, 0.0, m_tips);
   m_predicted = m_tips;
   m_gap.resize(m_contact.n_tips());
   for (int k = 0; k < m_contact.n_tips(); ++k)
@@ -310,12 +220,14 @@ double ReducedIntegrator::flexibility(const TipContact& i, const TipContact& j) 
   // G_i^q = -e(u_i), D_j^q = -e(u_j) - mu s_j e(v_j).
   double w = m_mq_inverse(i.q_u, j.q_u) + m_mu * j.sign * m_mq_inverse(i.q_u, j.q_v);
   // G_i^c = sum_a N_a e(cu_a), D_j^c = sum_b N_b (e(cu_b) + mu s_j e(cv_b)).
+  const Eigen::MatrixXd& casing_flexibility = m_casing->flexibility();
   for (int a = 0; a < 4; ++a) {
     if (i.c_u[a] < 0) continue;
     for (int b = 0; b < 4; ++b) {
       if (j.c_u[b] < 0) continue;
       w += i.shape[a] * j.shape[b] *
-           (m_mc_inverse(i.c_u[a], j.c_u[b]) + m_mu * j.sign * m_mc_inverse(i.c_u[a], j.c_v[b]));
+           (casing_flexibility(i.c_u[a], j.c_u[b]) +
+            m_mu * j.sign * casing_flexibility(i.c_u[a], j.c_v[b]));
     }
   }
   return m_dt * m_dt * w;
@@ -399,15 +311,16 @@ Eigen::Matrix2d ReducedIntegrator::coulomb_block(const TipContact& i, const TipC
   double nt = -m_mq_inverse(i.q_u, j.q_v);
   double tn = -m_mq_inverse(i.q_v, j.q_u);
   double tt = m_mq_inverse(i.q_v, j.q_v);
+  const Eigen::MatrixXd& casing_flexibility = m_casing->flexibility();
   for (int a = 0; a < 4; ++a) {
     if (i.c_u[a] < 0) continue;
     for (int b = 0; b < 4; ++b) {
       if (j.c_u[b] < 0) continue;
       const double nab = i.shape[a] * j.shape[b];
-      nn += nab * m_mc_inverse(i.c_u[a], j.c_u[b]);
-      nt -= nab * m_mc_inverse(i.c_u[a], j.c_v[b]);
-      tn -= nab * m_mc_inverse(i.c_v[a], j.c_u[b]);
-      tt += nab * m_mc_inverse(i.c_v[a], j.c_v[b]);
+      nn += nab * casing_flexibility(i.c_u[a], j.c_u[b]);
+      nt -= nab * casing_flexibility(i.c_u[a], j.c_v[b]);
+      tn -= nab * casing_flexibility(i.c_v[a], j.c_u[b]);
+      tt += nab * casing_flexibility(i.c_v[a], j.c_v[b]);
     }
   }
   const double dt2 = m_dt * m_dt;
@@ -533,18 +446,14 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
       m_dq -= f * m_mq_inverse.col(tip.q_u);
       if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
     }
-    add_casing_correction(tip, f, -ft);
+    m_casing->add_correction(tip, f, -ft);
   }
   apply_corrections();
 }
 
 void ReducedIntegrator::clear_corrections() {
   m_dq.setZero();
-  m_dc.setZero();
-  if (m_modal_casing) {
-    m_dp.setZero();
-    m_casing_terms.clear();
-  }
+  m_casing->clear_correction();
   if (m_modal_disk) {
     m_deta.setZero();
     m_dq_boundary.setZero();
@@ -562,79 +471,7 @@ void ReducedIntegrator::apply_corrections() {
   } else {
     m_q_next += m_dq;
   }
-  apply_casing_correction();
-}
-
-void ReducedIntegrator::add_casing_correction(const TipContact& tip, double f_u, double f_v) {
-  // c_u and c_v interleaved per node, as summed before the modal casing
-  // existed (the full-casing histories stay bit for bit).
-  Eigen::VectorXd& sum = m_modal_casing ? m_dp : m_dc;
-  const Eigen::MatrixXd& columns = m_modal_casing ? m_phi_scaled_t : m_mc_inverse;
-  for (int b = 0; b < 4; ++b) {
-    if (tip.c_u[b] < 0) continue;
-    sum += (f_u * tip.shape[b]) * columns.col(tip.c_u[b]);
-    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_u[b], f_u * tip.shape[b]);
-    if (f_v == 0.0) continue;
-    sum += (f_v * tip.shape[b]) * columns.col(tip.c_v[b]);
-    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_v[b], f_v * tip.shape[b]);
-  }
-}
-
-void ReducedIntegrator::apply_casing_correction() {
-  if (m_modal_casing) {
-    // c = Phi (p~ + dp) = c~ + sum of f Phi diag(1/a) Phi^T e_dof: with fewer
-    // terms than modes the columns of m_mc_inverse (n_c each) cost less than
-    // Phi p again (n_c N_c); the same c up to round-off.
-    m_p_next += m_dp;
-    if (static_cast<Eigen::Index>(m_casing_terms.size()) < m_p_next.size()) {
-      for (const auto& [dof, f] : m_casing_terms)
-        m_c_next.noalias() += f * m_mc_inverse.col(dof);
-    } else {
-      m_c_next.noalias() = m_phi * m_p_next;
-    }
-  } else {
-    m_c_next += m_dc;
-  }
-}
-
-void ReducedIntegrator::predict_modal_casing() {
-  const double dt2 = m_dt * m_dt;
-  const Eigen::Index m = m_p.size();
-  for (Eigen::Index i = 0; i < m; ++i) {
-    double acc = -m_omega_squared(i) * m_p(i);
-    if (!m_force_zero) acc += m_force_modal(i);
-    if (m_c_damped) acc -= m_modal_gamma(i) * (m_p(i) - m_p_prev(i)) / m_dt;
-    m_p_next(i) = 2.0 * m_p(i) - m_p_prev(i) + dt2 * m_modal_a_inverse(i) * acc;
-  }
-  m_c_next.noalias() = m_phi * m_p_next;
-}
-
-void ReducedIntegrator::predict_casing() {
-  if (m_modal_casing) {
-    predict_modal_casing();
-    return;
-  }
-  // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y by
-  // Eigen's triangular solves on the factor (no permutation in place), and
-  // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)).
-  const int n = static_cast<int>(m_c.size());
-  const double dt2 = m_dt * m_dt;
-  m_kc_rows.multiply(m_c, m_kc_c);
-  if (m_c_damped) {
-    // K_c c_n + C_c (c_n - c_{n-1}) / dt, C_c = alpha M_c + beta K_c.
-    m_c_delta = m_c - m_c_prev;
-    m_c_damping.noalias() = m_mc * m_c_delta;
-    m_c_damping *= m_casing_damping.alpha;
-    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
-    m_kc_c += m_c_damping / m_dt;
-  }
-  for (int i = 0; i < n; ++i)
-    m_casing_work(m_mc_order[i]) = m_force_zero ? -m_kc_c(i) : m_force(i) - m_kc_c(i);
-  m_mc_factor.matrixL().solveInPlace(m_casing_work);
-  m_casing_work.array() *= m_mc_inverse_d.array();
-  m_mc_factor.matrixU().solveInPlace(m_casing_work);
-  for (int j = 0; j < n; ++j)
-    m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * m_casing_work(m_mc_order[j]);
+  m_casing->apply_correction();
 }
 
 double ReducedIntegrator::step_damping_work() {
@@ -648,13 +485,7 @@ double ReducedIntegrator::step_damping_work() {
       work += m_dq.dot(m_cq.cwiseProduct(m_dq));
     }
   }
-  if (m_c_damped) {
-    m_c_delta = m_c_next - m_c_prev;
-    m_c_damping.noalias() = m_mc * m_c_delta;
-    m_c_damping *= m_casing_damping.alpha;
-    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
-    work += m_c_delta.dot(m_c_damping);
-  }
+  if (m_casing->damped()) work += m_casing->step_damping_product();
   return work / (4.0 * m_dt);
 }
 
@@ -672,9 +503,9 @@ StepReport ReducedIntegrator::step() {
       m_q_next.noalias() -= m_bq * m_dq;
     }
   }
-  predict_casing();
+  m_casing->predict();
   const double t_next = (m_n + 1) * m_dt;
-  m_contact.evaluate(m_q_next, m_q, m_c_next, m_c, m_dt, t_next, m_predicted);
+  m_contact.evaluate(m_q_next, m_q, m_casing->next(), m_casing->now(), m_dt, t_next, m_predicted);
   StepReport report;
   const bool coulomb = m_law == FrictionLaw::coulomb;
   if (coulomb)
@@ -697,33 +528,25 @@ StepReport ReducedIntegrator::step() {
       } else {
         m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
       }
-      if (m_modal_casing) {
-        add_casing_correction(tip, f, f * m_mu * tip.sign);
-      } else {
-        for (int b = 0; b < 4; ++b)
-          if (tip.c_u[b] >= 0)
-            m_dc += f * tip.shape[b] *
-                    (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
-      }
+      m_casing->add_sliding_correction(tip, f, m_mu);
     }
     apply_corrections();
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
-  if (!m_force_zero) {
-    m_casing_work = m_c_next - m_c_prev;
-    m_external_work += 0.5 * m_force.dot(m_casing_work);
-  }
+  if (!m_casing->force_zero()) m_external_work += m_casing->step_external_work();
   if (coulomb) {
     for (int j = 0; j < m_lambda.size(); ++j)
       if (m_lambda(j) != 0.0) {
         // B_n . dx and B_t . dx over dx = x_{n+1} - x_{n-1}, at tip j's entries.
         const TipContact& tip = m_predicted[j];
+        const Eigen::VectorXd& c_next = m_casing->next();
+        const Eigen::VectorXd& c_prev = m_casing->previous();
         double normal = -(m_q_next(tip.q_u) - m_q_prev(tip.q_u));
         double tangential = m_q_next(tip.q_v) - m_q_prev(tip.q_v);
         for (int b = 0; b < 4; ++b)
           if (tip.c_u[b] >= 0) {
-            normal += tip.shape[b] * (m_c_next(tip.c_u[b]) - m_c_prev(tip.c_u[b]));
-            tangential -= tip.shape[b] * (m_c_next(tip.c_v[b]) - m_c_prev(tip.c_v[b]));
+            normal += tip.shape[b] * (c_next(tip.c_u[b]) - c_prev(tip.c_u[b]));
+            tangential -= tip.shape[b] * (c_next(tip.c_v[b]) - c_prev(tip.c_v[b]));
           }
         m_contact_work += 0.5 * (m_lambda(j) * normal + m_lambda_t(j) * tangential);
       }
@@ -731,7 +554,8 @@ StepReport ReducedIntegrator::step() {
     for (int j = 0; j < m_lambda.size(); ++j)
       if (m_lambda(j) != 0.0)
         m_contact_work += 0.5 * m_lambda(j) *
-                          direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
+                          direction_dot(m_predicted[j], m_q_next, m_q_prev, m_casing->next(),
+                                        m_casing->previous());
     // The tangential force the law applied, -mu sign lambda (tangential_lambda()).
     if (corrected) {
       for (int j = 0; j < m_lambda.size(); ++j)
@@ -743,16 +567,11 @@ StepReport ReducedIntegrator::step() {
     }
   }
 
-  if (m_q_damped || m_c_damped) m_damping_work += step_damping_work();
+  if (m_q_damped || m_casing->damped()) m_damping_work += step_damping_work();
 
   m_q_prev.swap(m_q);
   m_q.swap(m_q_next);
-  m_c_prev.swap(m_c);
-  m_c.swap(m_c_next);
-  if (m_modal_casing) {
-    m_p_prev.swap(m_p);
-    m_p.swap(m_p_next);
-  }
+  m_casing->advance();
   if (m_modal_disk) {
     m_eta_prev.swap(m_eta);
     m_eta.swap(m_eta_next);
@@ -762,7 +581,7 @@ StepReport ReducedIntegrator::step() {
   // The tips at the new state: those predicted unless a correction moved it
   // (then m_predicted keeps the predicted signs compared below).
   if (corrected)
-    m_contact.evaluate(m_q, m_q_prev, m_c, m_c_prev, m_dt, t_next, m_tips);
+    m_contact.evaluate(m_q, m_q_prev, m_casing->now(), m_casing->previous(), m_dt, t_next, m_tips);
   else
     m_tips.swap(m_predicted);
   for (int k = 0; k < m_lambda.size(); ++k) {

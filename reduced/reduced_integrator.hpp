@@ -1,8 +1,11 @@
 #pragma once
 // Central differences with forward-increment Lagrange multipliers for the
 // reduced bladed disk (dense K^, M^, coordinates q) coupled through contact
-// with the full casing (sparse K_c, M_c): SPEC §3, written independently
-// of the reference integrator.
+// with the casing (sparse K_c, M_c): SPEC §3, written independently of the
+// reference integrator. The casing's share of the step is a casing part
+// (casing_part.hpp): the full casing (full_casing_part.hpp) or its modes
+// plus a static correction (modal_casing_part.hpp), which state their
+// equations; M_c^-1 below is the part's A_c^-1.
 //
 //   q~ = 2 q_n - q_{n-1} - dt^2 M^-1 K^ q_n           (no external force on the disk)
 //   c~ = 2 c_n - c_{n-1} + dt^2 M_c^-1 (F_n - K_c c_n)
@@ -10,15 +13,10 @@
 //   active set; every negative lambda dropped at once, constraints closed by
 //   the correction added, until both hold;
 //   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
-// M^-1 (r x r) and M_c^-1 (dense, 4 dofs per casing node) are formed once
-// from Cholesky factorizations whose status is checked; they serve the
-// contact rows. The predictor applies M^-1 K^ (dense, formed once) and the
-// sparse LDL^T factor of M_c, P M_c P^T = L D L^T, whose ordering P is
-// applied while the right-hand side is gathered and the solution scattered,
-// so a step allocates nothing and permutes nothing in place.
-// The casing force F is piecewise constant (SPEC §2: on during the first
-// steps, then zero): it is held (set_force) until changed, and a zero force
-// costs nothing per step.
+// M^-1 (r x r) is formed once from a Cholesky factorization whose status is
+// checked; it serves the contact rows. The predictor applies M^-1 K^
+// (dense, formed once). The casing force F is held by the casing part
+// (set_force) until changed.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
 //
@@ -40,19 +38,8 @@
 // E = E_0 + W_ext + W_contact - W_damp to round-off. Without damping A = M
 // and the step is the undamped one, operation for operation.
 //
-// Reduced casing (issue 14; casing_basis.hpp): with a CasingBasis the
-// casing is c = Phi p, Phi^T M_c Phi = I, Phi^T K_c Phi = Omega^2 = diag, and
-// the casing's part of the step is, mode by mode (C_c = alpha M_c + beta K_c
-// is diagonal there, gamma_i = alpha + beta omega_i^2, a_i = 1 + dt/2 gamma_i),
-//   p~_i = 2 p_i - p_{i,prev} + dt^2 (f_i - omega_i^2 p_i - gamma_i (p_i - p_{i,prev}) / dt) / a_i,
-// f = Phi^T F, then c~ = Phi p~ (every casing dof is read by the 22 tips'
-// contact evaluation: the reconstruction is the cost, 2 n_c N_c flops). The
-// contact rows stay the physical ones at the casing dofs; A_c^-1 becomes
-// Phi diag(1/a) Phi^T (the flexibility the modal casing has), and the
-// correction is applied to p: p += dt^2 diag(1/a) Phi^T B_c^T lambda, then
-// c = Phi p again. Energy, works and W_damp keep their physical formulas:
-// with c = Phi p they are the modal ones to round-off. The critical step is
-// 2 / max(omega_max(K^, M^), max omega_i).
+// Reduced casing (casing_basis.hpp): the modal casing part,
+// modal_casing_part.hpp.
 //
 // Modal bladed disk (undamped runs given the reduced modes, critical_step.hpp
 // reduced_modes, computed once with the basis): K^ Psi = M^ Psi Lambda,
@@ -104,6 +91,7 @@
 // stick / slip changed since the previous step); n_stick, n_slip. With
 // mu = 0 a closed tip is classified slip (lambda_t = 0).
 
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -117,6 +105,7 @@
 
 #include "case_file.hpp"
 #include "casing_basis.hpp"
+#include "casing_part.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "critical_step.hpp"
 #include "failure_kinds.hpp"
@@ -180,7 +169,7 @@ public:
   void tip_displacement(Eigen::VectorXd& out) const;
   /// Whether the disk runs in modal coordinates (undamped and asked for).
   bool modal_bladed_disk() const { return m_modal_disk; }
-  const Eigen::VectorXd& casing() const { return m_c; }
+  const Eigen::VectorXd& casing() const { return m_casing->now(); }
   const Eigen::VectorXd& gap() const override { return m_gap; }
   /// Normal multipliers lambda_n of the last step, one per tip [N].
   const Eigen::VectorXd& lambda() const override { return m_lambda; }
@@ -216,21 +205,15 @@ public:
   /// also dt A^-1 C^ (q_n - q_{n-1}) (2 r^2) and about 5 r for the
   /// difference and W_damp.
   double flops_per_step() const;
-  /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
-  /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
-  /// Damped, also M_c and K_c times a difference twice (force and W_damp:
-  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c. A modal casing: the
-  /// reconstruction c = Phi p (2 n_c m) and about 10 m (damped: the same
-  /// W_damp products as the full casing).
-  double casing_flops_per_step() const;
+  /// The casing part's (full_casing_part.hpp, modal_casing_part.hpp): the
+  /// floor under every reduced run.
+  double casing_flops_per_step() const { return m_casing->flops_per_step(); }
 
 private:
   /// start(casing_force, q0) after its set_force.
   void start_at(const Eigen::Ref<const Eigen::VectorXd>& q0);
   /// E_{n-1/2} of the reduced bladed disk in physical coordinates q.
   double disk_energy() const;
-  /// E_{n-1/2} of the casing (modal coordinates when reduced).
-  double casing_energy() const;
   double flexibility(const TipContact& i, const TipContact& j) const;
   /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
   /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
@@ -244,16 +227,6 @@ private:
   void solve_coulomb(const std::vector<TipContact>& tips, StepReport& report);
   /// Coulomb: (q, c)_{n+1} += dt^2 A^-1 B^T lambda.
   void correct_coulomb(const std::vector<TipContact>& tips);
-  /// m_c_next = c~ from m_c, m_c_prev and the held force.
-  void predict_casing();
-  /// The same for a modal casing, from m_p, m_p_prev (c~ = Phi p~).
-  void predict_modal_casing();
-  /// The casing's correction A_c^-1 (N^T f_u on tip's c_u + N^T f_v on its
-  /// c_v) added to m_dc (full casing) or to m_dp (modal casing, diag(1/a)
-  /// Phi^T in place of A_c^-1); f already carries dt^2.
-  void add_casing_correction(const TipContact& tip, double f_u, double f_v);
-  /// c_{n+1} += the correction gathered in m_dc or m_dp.
-  void apply_casing_correction();
   /// Modal disk: m_q_next's boundary entries = Psi_B eta_next.
   void form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q);
   /// Adds the contact corrections gathered in m_deta (modal disk) or m_dq,
@@ -281,16 +254,9 @@ private:
   Eigen::MatrixXd m_cq_matrix;  ///< a full C^ (empty unless given)
   Eigen::VectorXd m_cq_dq;      ///< C^ (q_{n+1} - q_{n-1}), for W_damp with a full C^
   Eigen::MatrixXd m_bq;         ///< dt A^-1 C^ (damped only)
-  RayleighDamping m_casing_damping;
   bool m_q_damped = false;
-  bool m_c_damped = false;
-  Eigen::SparseMatrix<double, Eigen::RowMajor> m_kc;
-  SparseRows m_kc_rows; ///< K_c for the per-step product (the full run's row kernels)
-  Eigen::SparseMatrix<double, Eigen::RowMajor> m_mc;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor; ///< of A_c = M_c + dt/2 C_c
-  std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
-  Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
-  Eigen::MatrixXd m_mc_inverse; ///< A_c^-1 (modal casing: Phi diag(1/a) Phi^T)
+  /// The casing: full sparse or modal (casing_part.hpp).
+  std::unique_ptr<CasingPart> m_casing;
   // Modal bladed disk: q = Psi eta.
   bool m_modal_disk = false;
   Eigen::MatrixXd m_psi;          ///< Psi, r x r, M^-orthonormal
@@ -301,16 +267,6 @@ private:
   std::vector<int> m_boundary_index; ///< q position -> index in m_boundary (-1: not a tip's)
   Eigen::MatrixXd m_boundary_flexibility; ///< Psi_B Psi_B^T
   Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary, m_dq_boundary;
-  // Modal casing (casing_basis): c = Phi p.
-  bool m_modal_casing = false;
-  Eigen::MatrixXd m_phi;             ///< Phi, n_c x m
-  Eigen::MatrixXd m_phi_scaled_t;    ///< diag(1/a) Phi^T, m x n_c: the correction's columns
-  Eigen::VectorXd m_omega_squared;   ///< omega_i^2
-  Eigen::VectorXd m_modal_gamma;     ///< gamma_i = alpha + beta omega_i^2
-  Eigen::VectorXd m_modal_a_inverse; ///< 1 / a_i
-  Eigen::VectorXd m_force_modal;     ///< Phi^T F
-  Eigen::VectorXd m_p, m_p_prev, m_p_next, m_dp;
-  std::vector<std::pair<int, double>> m_casing_terms; ///< (casing dof, f) of the step's correction
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
@@ -318,14 +274,8 @@ private:
   CoulombGaussSeidel m_coulomb; ///< used under the coulomb law only
 
   int m_n = 0;
-  Eigen::VectorXd m_force;  ///< held casing force F [N]
-  bool m_force_zero = true; ///< F == 0 exactly: skipped in the step
-  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev;
-  Eigen::VectorXd m_q_next, m_c_next, m_dq, m_dc;
-  Eigen::VectorXd
-      m_casing_work;      ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
-  Eigen::VectorXd m_kc_c; ///< K_c c_n (work)
-  Eigen::VectorXd m_c_delta, m_c_damping; ///< damped casing: c difference, C_c times it (work)
+  Eigen::VectorXd m_q, m_q_prev;
+  Eigen::VectorXd m_q_next, m_dq;
   Eigen::VectorXd m_gap, m_lambda;
   Eigen::VectorXd m_lambda_t; ///< tangential multipliers, one per tip
   bool m_lambda_t_zero = true;
