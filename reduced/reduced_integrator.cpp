@@ -5,7 +5,9 @@
 #include <string>
 
 #include "full_casing_part.hpp"
+#include "modal_disk_part.hpp"
 #include "modal_casing_part.hpp"
+#include "physical_disk_part.hpp"
 
 namespace rsi {
 
@@ -15,13 +17,7 @@ bool finite_non_negative(double x) {
   return std::isfinite(x) && x >= 0.0;
 }
 
-// What to change, for the messages of ReducedIntegrationError (issue 13,
-// class 8). The case's M is positive definite (checked when it loads) and
-// so is T^T M T for a basis T of full rank: a mass that fails here is a
-// basis that lost its rank in rounding.
-const std::string kReducedMassRemedy =
-    "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: "
-    "keep fewer modes (--modes, or the campaign's modes) or use another --method";
+// What to change, for the messages of ReducedIntegrationError.
 const std::string kStepRemedy =
     "; use a smaller step (time.step, or --time-step and the campaign's time_step of a reduced "
     "run)";
@@ -36,77 +32,42 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                      const ReducedDamping& damping,
                                      const CasingBasis* casing_basis,
                                      const ReducedModes* disk_modes)
-    : m_kq(basis.stiffness)
-    , m_mq(basis.mass)
-    , m_dt(dt)
+    : m_dt(dt)
     , m_mu(contact.friction_coefficient())
     , m_contact(contact)
     , m_law(contact.friction_law())
     , m_coulomb(1, contact.friction_coefficient()) {
-  const Eigen::Index r = m_kq.rows();
+  const Eigen::Index r = basis.n_reduced();
+  bool disk_damped = false;
   if (damping.bladed_disk.size() != 0) {
     if (damping.bladed_disk.size() != r ||
         !damping.bladed_disk.unaryExpr(&finite_non_negative).all())
       throw std::invalid_argument("ReducedIntegrator: the bladed-disk damping must have " +
                                   std::to_string(r) + " finite entries >= 0");
-    m_q_damped = (damping.bladed_disk.array() != 0.0).any();
+    disk_damped = (damping.bladed_disk.array() != 0.0).any();
   }
+  Eigen::MatrixXd disk_damping_matrix;
   if (damping.bladed_disk_matrix.size() != 0) {
     if (damping.bladed_disk.size() != 0 || damping.bladed_disk_matrix.rows() != r ||
         damping.bladed_disk_matrix.cols() != r || !damping.bladed_disk_matrix.allFinite())
       throw std::invalid_argument("ReducedIntegrator: a full bladed-disk damping must be " +
                                   std::to_string(r) + " x " + std::to_string(r) +
                                   ", finite, and given without the diagonal one");
-    m_cq_matrix = damping.bladed_disk_matrix;
-    m_q_damped = (m_cq_matrix.array() != 0.0).any();
-    if (!m_q_damped) m_cq_matrix.resize(0, 0);
+    disk_damping_matrix = damping.bladed_disk_matrix;
+    disk_damped = (disk_damping_matrix.array() != 0.0).any();
+    if (!disk_damped) disk_damping_matrix.resize(0, 0);
   }
   if (!finite_non_negative(damping.casing.alpha) || !finite_non_negative(damping.casing.beta))
     throw std::invalid_argument(
         "ReducedIntegrator: the casing's Rayleigh alpha and beta must be finite and >= 0");
 
-  // A = M^ + dt/2 C^ (M^ undamped), factorized once.
-  Eigen::MatrixXd a_q = m_mq;
-  if (m_q_damped && m_cq_matrix.size() != 0) {
-    a_q += 0.5 * dt * m_cq_matrix;
-  } else if (m_q_damped) {
-    m_cq = damping.bladed_disk;
-    a_q.diagonal() += 0.5 * dt * m_cq;
-  }
-  const Eigen::LLT<Eigen::MatrixXd> mq_factor(a_q);
-  if (mq_factor.info() != Eigen::Success)
-    throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
-                                  (m_q_damped ? " plus dt/2 C^" : "") +
-                                  " is not positive definite" + kReducedMassRemedy);
-  m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
-  m_tip_position = basis.boundary_position;
-  const bool modal = disk_modes != nullptr && !m_q_damped;
-  if (!modal) m_aq = mq_factor.solve(m_kq); // the physical predictor's M^-1 K^ only
-  if (m_q_damped)
-    m_bq = m_cq_matrix.size() != 0 ? Eigen::MatrixXd(dt * (m_mq_inverse * m_cq_matrix))
-                                   : Eigen::MatrixXd(dt * (m_mq_inverse * m_cq.asDiagonal()));
-  if (modal) {
-    if (disk_modes->shapes.rows() != r || disk_modes->shapes.cols() != r ||
-        disk_modes->omega_squared.size() != r)
-      throw std::invalid_argument("ReducedIntegrator: the reduced modes must be " +
-                                  std::to_string(r) + " x " + std::to_string(r));
-    m_modal_disk = true;
-    m_psi = disk_modes->shapes;
-    m_lambda_disk = disk_modes->omega_squared;
-    m_boundary = basis.boundary_position;
-    m_psi_boundary.resize(static_cast<Eigen::Index>(m_boundary.size()), r);
-    m_boundary_index.assign(static_cast<size_t>(r), -1);
-    for (size_t i = 0; i < m_boundary.size(); ++i) {
-      m_psi_boundary.row(static_cast<Eigen::Index>(i)) = m_psi.row(m_boundary[i]);
-      m_boundary_index[static_cast<size_t>(m_boundary[i])] = static_cast<int>(i);
-    }
-    m_boundary_flexibility = m_psi_boundary * m_psi_boundary.transpose();
-    m_eta = m_eta_prev = m_eta_next = m_deta = Eigen::VectorXd::Zero(r);
-    m_q_boundary = m_dq_boundary =
-        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
-  }
-
-  m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
+  // The disk in its modes when undamped and given them (modal_disk_part.hpp).
+  m_modal_disk = disk_modes != nullptr && !disk_damped;
+  if (m_modal_disk)
+    m_disk = std::make_unique<ModalDiskPart>(basis, dt, *disk_modes);
+  else
+    m_disk = std::make_unique<PhysicalDiskPart>(basis, dt, disk_damped, damping.bladed_disk,
+                                                disk_damping_matrix);
   if (casing_basis != nullptr)
     m_casing = std::make_unique<ModalCasingPart>(casing, *casing_basis, dt, damping.casing);
   else
@@ -114,42 +75,11 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
 }
 
 double ReducedIntegrator::flops_per_step() const {
-  const auto r = static_cast<double>(m_kq.rows());
-  const double disk = m_modal_disk ? 2.0 * static_cast<double>(m_boundary.size()) * r + 5.0 * r
-                                   : 2.0 * r * r + 4.0 * r;
-  double flops = disk + 64.0 * m_contact.n_tips() + casing_flops_per_step();
-  if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
-  if (m_cq_matrix.size() != 0) flops += 2.0 * r * r; // C^ dq of W_damp
-  return flops;
+  return m_disk->flops_per_step() + 64.0 * m_contact.n_tips() + casing_flops_per_step();
 }
 
 double ReducedIntegrator::energy() const {
-  return m_casing->energy() + (m_modal_disk ? 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
-                                               0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta))
-                                         : disk_energy());
-}
-
-double ReducedIntegrator::disk_energy() const {
-  const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
-  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q);
-}
-
-void ReducedIntegrator::tip_displacement(Eigen::VectorXd& out) const {
-  // On the modal path q_n's boundary entries are kept (form_boundary).
-  out.resize(static_cast<Eigen::Index>(m_tip_position.size()));
-  for (size_t i = 0; i < m_tip_position.size(); ++i)
-    out(static_cast<Eigen::Index>(i)) = m_q(m_tip_position[i]);
-}
-
-Eigen::VectorXd ReducedIntegrator::q() const {
-  if (m_modal_disk) return m_psi * m_eta;
-  return m_q;
-}
-
-void ReducedIntegrator::form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q) {
-  m_q_boundary.noalias() = m_psi_boundary * eta;
-  for (size_t i = 0; i < m_boundary.size(); ++i)
-    q(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
+  return m_casing->energy() + m_disk->energy();
 }
 
 void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
@@ -161,46 +91,29 @@ void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casin
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
-  start(casing_force, Eigen::VectorXd::Zero(m_kq.rows()));
+  start(casing_force, Eigen::VectorXd::Zero(m_disk->n_reduced()));
 }
 
 void ReducedIntegrator::start() {
-  start_at(Eigen::VectorXd::Zero(m_kq.rows()));
+  start_at(Eigen::VectorXd::Zero(m_disk->n_reduced()));
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
                               const Eigen::Ref<const Eigen::VectorXd>& q0) {
-  if (q0.size() != m_kq.rows())
+  if (q0.size() != m_disk->n_reduced())
     throw std::invalid_argument("ReducedIntegrator::start: q0 has " + std::to_string(q0.size()) +
-                                " entries, the reduced model " + std::to_string(m_kq.rows()));
+                                " entries, the reduced model " +
+                                std::to_string(m_disk->n_reduced()));
   set_force(casing_force);
   start_at(q0);
 }
 
 void ReducedIntegrator::start_at(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   m_n = 0;
-  m_q = q0;
-  if (q0.isZero(0.0)) {
-    m_q_prev = m_q;
-  } else {
-    // q_{-1} = q0 + dt^2/2 M^-1 (-K^ q0): at rest, with M^ itself (not A).
-    const Eigen::LLT<Eigen::MatrixXd> mass(m_mq);
-    if (mass.info() != Eigen::Success)
-      throw ReducedIntegrationError(
-          "reduced integrator: the reduced mass matrix is not positive definite" +
-          kReducedMassRemedy);
-    m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
-  }
-  if (m_modal_disk) {
-    // eta = Psi^T M^ q, the same start in modal coordinates; q, q_prev whole.
-    m_eta.noalias() = m_psi.transpose() * (m_mq * m_q);
-    m_eta_prev = m_eta - (0.5 * m_dt * m_dt) * m_lambda_disk.cwiseProduct(m_eta);
-    if (q0.isZero(0.0)) m_eta_prev = m_eta;
-    m_q.noalias() = m_psi * m_eta;
-    m_q_prev.noalias() = m_psi * m_eta_prev;
-  }
+  m_disk->start(q0);
   m_casing->start();
-  m_contact.evaluate(m_q, m_q, m_casing->now(), m_casing->now(), m_dt, 0.0, m_tips);
+  m_contact.evaluate(m_disk->now(), m_disk->now(), m_casing->now(), m_casing->now(), m_dt, 0.0,
+                     m_tips);
   m_predicted = m_tips;
   m_gap.resize(m_contact.n_tips());
   for (int k = 0; k < m_contact.n_tips(); ++k)
@@ -218,7 +131,9 @@ void ReducedIntegrator::start_at(const Eigen::Ref<const Eigen::VectorXd>& q0) {
 
 double ReducedIntegrator::flexibility(const TipContact& i, const TipContact& j) const {
   // G_i^q = -e(u_i), D_j^q = -e(u_j) - mu s_j e(v_j).
-  double w = m_mq_inverse(i.q_u, j.q_u) + m_mu * j.sign * m_mq_inverse(i.q_u, j.q_v);
+  const Eigen::MatrixXd& disk_flexibility = m_disk->flexibility();
+  double w =
+      disk_flexibility(i.q_u, j.q_u) + m_mu * j.sign * disk_flexibility(i.q_u, j.q_v);
   // G_i^c = sum_a N_a e(cu_a), D_j^c = sum_b N_b (e(cu_b) + mu s_j e(cv_b)).
   const Eigen::MatrixXd& casing_flexibility = m_casing->flexibility();
   for (int a = 0; a < 4; ++a) {
@@ -307,10 +222,11 @@ void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
 Eigen::Matrix2d ReducedIntegrator::coulomb_block(const TipContact& i, const TipContact& j) const {
   // Rows B_n,i = (-e(u_i); +N_i on c_u), B_t,i = (+e(v_i); -N_i on c_v); the
   // same for the columns of j.
-  double nn = m_mq_inverse(i.q_u, j.q_u);
-  double nt = -m_mq_inverse(i.q_u, j.q_v);
-  double tn = -m_mq_inverse(i.q_v, j.q_u);
-  double tt = m_mq_inverse(i.q_v, j.q_v);
+  const Eigen::MatrixXd& disk_flexibility = m_disk->flexibility();
+  double nn = disk_flexibility(i.q_u, j.q_u);
+  double nt = -disk_flexibility(i.q_u, j.q_v);
+  double tn = -disk_flexibility(i.q_v, j.q_u);
+  double tt = disk_flexibility(i.q_v, j.q_v);
   const Eigen::MatrixXd& casing_flexibility = m_casing->flexibility();
   for (int a = 0; a < 4; ++a) {
     if (i.c_u[a] < 0) continue;
@@ -439,73 +355,36 @@ void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
     const TipContact& tip = tips[j];
     const double f = dt2 * m_lambda(j);
     const double ft = dt2 * m_lambda_t(j);
-    if (m_modal_disk) {
-      add_disk_correction(tip.q_u, -f);
-      if (ft != 0.0) add_disk_correction(tip.q_v, ft);
-    } else {
-      m_dq -= f * m_mq_inverse.col(tip.q_u);
-      if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
-    }
+    m_disk->add_coulomb_correction(tip, f, ft);
     m_casing->add_correction(tip, f, -ft);
   }
   apply_corrections();
 }
 
 void ReducedIntegrator::clear_corrections() {
-  m_dq.setZero();
+  m_disk->clear_correction();
   m_casing->clear_correction();
-  if (m_modal_disk) {
-    m_deta.setZero();
-    m_dq_boundary.setZero();
-  }
 }
 
 void ReducedIntegrator::apply_corrections() {
-  if (m_modal_disk) {
-    // q_B = Psi_B (eta~ + d eta) = q~_B + Psi_B Psi_B^T (sum of f e): the
-    // predictor's q~_B plus the corrections' columns (add_disk_correction).
-    m_eta_next += m_deta;
-    m_q_boundary += m_dq_boundary;
-    for (size_t i = 0; i < m_boundary.size(); ++i)
-      m_q_next(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
-  } else {
-    m_q_next += m_dq;
-  }
+  m_disk->apply_correction();
   m_casing->apply_correction();
 }
 
 double ReducedIntegrator::step_damping_work() {
   double work = 0.0;
-  if (m_q_damped) {
-    m_dq = m_q_next - m_q_prev;
-    if (m_cq_matrix.size() != 0) {
-      m_cq_dq.noalias() = m_cq_matrix * m_dq;
-      work += m_dq.dot(m_cq_dq);
-    } else {
-      work += m_dq.dot(m_cq.cwiseProduct(m_dq));
-    }
-  }
+  if (m_disk->damped()) work += m_disk->step_damping_product();
   if (m_casing->damped()) work += m_casing->step_damping_product();
   return work / (4.0 * m_dt);
 }
 
 StepReport ReducedIntegrator::step() {
   const double dt2 = m_dt * m_dt;
-  if (m_modal_disk) {
-    m_eta_next = 2.0 * m_eta - m_eta_prev;
-    m_eta_next -= dt2 * m_lambda_disk.cwiseProduct(m_eta);
-    form_boundary(m_eta_next, m_q_next);
-  } else {
-    m_q_next = 2.0 * m_q - m_q_prev;
-    m_q_next.noalias() -= dt2 * (m_aq * m_q);
-    if (m_q_damped) { // - dt A^-1 C^ (q_n - q_{n-1})
-      m_dq = m_q - m_q_prev;
-      m_q_next.noalias() -= m_bq * m_dq;
-    }
-  }
+  m_disk->predict();
   m_casing->predict();
   const double t_next = (m_n + 1) * m_dt;
-  m_contact.evaluate(m_q_next, m_q, m_casing->next(), m_casing->now(), m_dt, t_next, m_predicted);
+  m_contact.evaluate(m_disk->next(), m_disk->now(), m_casing->next(), m_casing->now(), m_dt,
+                     t_next, m_predicted);
   StepReport report;
   const bool coulomb = m_law == FrictionLaw::coulomb;
   if (coulomb)
@@ -522,12 +401,7 @@ StepReport ReducedIntegrator::step() {
       if (m_lambda(j) == 0.0) continue;
       const TipContact& tip = m_predicted[j];
       const double f = dt2 * m_lambda(j);
-      if (m_modal_disk) {
-        add_disk_correction(tip.q_u, -f);
-        if (m_mu * tip.sign != 0.0) add_disk_correction(tip.q_v, -f * m_mu * tip.sign);
-      } else {
-        m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
-      }
+      m_disk->add_sliding_correction(tip, f, m_mu);
       m_casing->add_sliding_correction(tip, f, m_mu);
     }
     apply_corrections();
@@ -539,10 +413,12 @@ StepReport ReducedIntegrator::step() {
       if (m_lambda(j) != 0.0) {
         // B_n . dx and B_t . dx over dx = x_{n+1} - x_{n-1}, at tip j's entries.
         const TipContact& tip = m_predicted[j];
+        const Eigen::VectorXd& q_next = m_disk->next();
+        const Eigen::VectorXd& q_prev = m_disk->previous();
         const Eigen::VectorXd& c_next = m_casing->next();
         const Eigen::VectorXd& c_prev = m_casing->previous();
-        double normal = -(m_q_next(tip.q_u) - m_q_prev(tip.q_u));
-        double tangential = m_q_next(tip.q_v) - m_q_prev(tip.q_v);
+        double normal = -(q_next(tip.q_u) - q_prev(tip.q_u));
+        double tangential = q_next(tip.q_v) - q_prev(tip.q_v);
         for (int b = 0; b < 4; ++b)
           if (tip.c_u[b] >= 0) {
             normal += tip.shape[b] * (c_next(tip.c_u[b]) - c_prev(tip.c_u[b]));
@@ -554,8 +430,8 @@ StepReport ReducedIntegrator::step() {
     for (int j = 0; j < m_lambda.size(); ++j)
       if (m_lambda(j) != 0.0)
         m_contact_work += 0.5 * m_lambda(j) *
-                          direction_dot(m_predicted[j], m_q_next, m_q_prev, m_casing->next(),
-                                        m_casing->previous());
+                          direction_dot(m_predicted[j], m_disk->next(), m_disk->previous(),
+                                        m_casing->next(), m_casing->previous());
     // The tangential force the law applied, -mu sign lambda (tangential_lambda()).
     if (corrected) {
       for (int j = 0; j < m_lambda.size(); ++j)
@@ -567,21 +443,17 @@ StepReport ReducedIntegrator::step() {
     }
   }
 
-  if (m_q_damped || m_casing->damped()) m_damping_work += step_damping_work();
+  if (m_disk->damped() || m_casing->damped()) m_damping_work += step_damping_work();
 
-  m_q_prev.swap(m_q);
-  m_q.swap(m_q_next);
+  m_disk->advance();
   m_casing->advance();
-  if (m_modal_disk) {
-    m_eta_prev.swap(m_eta);
-    m_eta.swap(m_eta_next);
-  }
   ++m_n;
 
   // The tips at the new state: those predicted unless a correction moved it
   // (then m_predicted keeps the predicted signs compared below).
   if (corrected)
-    m_contact.evaluate(m_q, m_q_prev, m_casing->now(), m_casing->previous(), m_dt, t_next, m_tips);
+    m_contact.evaluate(m_disk->now(), m_disk->previous(), m_casing->now(), m_casing->previous(),
+                       m_dt, t_next, m_tips);
   else
     m_tips.swap(m_predicted);
   for (int k = 0; k < m_lambda.size(); ++k) {

@@ -2,10 +2,14 @@
 // Central differences with forward-increment Lagrange multipliers for the
 // reduced bladed disk (dense K^, M^, coordinates q) coupled through contact
 // with the casing (sparse K_c, M_c): SPEC §3, written independently of the
-// reference integrator. The casing's share of the step is a casing part
-// (casing_part.hpp): the full casing (full_casing_part.hpp) or its modes
-// plus a static correction (modal_casing_part.hpp), which state their
-// equations; M_c^-1 below is the part's A_c^-1.
+// reference integrator. It is composed of parts that combine freely, each
+// stating its equations in its header: the bladed-disk part (disk_part.hpp:
+// physical coordinates, physical_disk_part.hpp, or the reduced modes,
+// modal_disk_part.hpp), the casing part (casing_part.hpp: the full casing,
+// full_casing_part.hpp, or its modes plus a static correction,
+// modal_casing_part.hpp), and the contact solve below (the active-set
+// multipliers of the sliding_sign law, or CoulombGaussSeidel). M^-1 and
+// M_c^-1 below are the parts' A^-1 and A_c^-1.
 //
 //   q~ = 2 q_n - q_{n-1} - dt^2 M^-1 K^ q_n           (no external force on the disk)
 //   c~ = 2 c_n - c_{n-1} + dt^2 M_c^-1 (F_n - K_c c_n)
@@ -13,10 +17,7 @@
 //   active set; every negative lambda dropped at once, constraints closed by
 //   the correction added, until both hold;
 //   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
-// M^-1 (r x r) is formed once from a Cholesky factorization whose status is
-// checked; it serves the contact rows. The predictor applies M^-1 K^
-// (dense, formed once). The casing force F is held by the casing part
-// (set_force) until changed.
+// The casing force F is held by the casing part (set_force) until changed.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
 //
@@ -41,19 +42,9 @@
 // Reduced casing (casing_basis.hpp): the modal casing part,
 // modal_casing_part.hpp.
 //
-// Modal bladed disk (undamped runs given the reduced modes, critical_step.hpp
-// reduced_modes, computed once with the basis): K^ Psi = M^ Psi Lambda,
-// Psi^T M^ Psi = I, q = Psi eta, and the disk's step is mode by mode,
-//   eta~_i = 2 eta_i - eta_{i,prev} - dt^2 lambda_i eta_i,
-// central differences being invariant under the change of coordinates (the
-// same scheme, not an approximation). Only the boundary entries of q are
-// formed, q_B = Psi_B eta (2 n_B r flops: the contact reads nothing else);
-// the correction is eta += dt^2 Psi^T B_q^T lambda (M^-1 = Psi Psi^T, rows
-// of Psi at the tip dofs), and the energy 1/2 |eta_{n+1} - eta_n|^2/dt^2 +
-// 1/2 eta_n^T Lambda eta_{n+1} costs O(r): the physical path's 2 r^2 step
-// and 4 r^2 energy (every row at one step a row) become 2 n_B r and O(r).
-// q() forms Psi eta when asked. A damped disk (C^ is not diagonal in Psi)
-// keeps the physical path, as does a caller giving no modes.
+// Modal bladed disk (undamped runs given the reduced modes): the modal
+// disk part, modal_disk_part.hpp; a damped disk, or a caller giving no
+// modes, gets the physical one.
 //
 // Friction law (the case's operating_point.friction_law). "sliding_sign"
 // (the default): the force rows D above, always sliding, as in the first
@@ -106,6 +97,7 @@
 #include "case_file.hpp"
 #include "casing_basis.hpp"
 #include "casing_part.hpp"
+#include "disk_part.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "critical_step.hpp"
 #include "failure_kinds.hpp"
@@ -162,11 +154,11 @@ public:
   int step_index() const override { return m_n; }
   double time() const override { return m_n * m_dt; }
   /// The reduced coordinates q_n (formed from eta on the modal path).
-  Eigen::VectorXd q() const;
+  Eigen::VectorXd q() const { return m_disk->q(); }
   /// The boundary (tip) entries of q_n, (u_1, v_1, u_2, v_2, ...) in the
   /// tip polar frame [m]: the physical tip displacements (the boundary is
   /// kept physical by every reduction).
-  void tip_displacement(Eigen::VectorXd& out) const;
+  void tip_displacement(Eigen::VectorXd& out) const { m_disk->tip_displacement(out); }
   /// Whether the disk runs in modal coordinates (undamped and asked for).
   bool modal_bladed_disk() const { return m_modal_disk; }
   const Eigen::VectorXd& casing() const { return m_casing->now(); }
@@ -212,8 +204,6 @@ public:
 private:
   /// start(casing_force, q0) after its set_force.
   void start_at(const Eigen::Ref<const Eigen::VectorXd>& q0);
-  /// E_{n-1/2} of the reduced bladed disk in physical coordinates q.
-  double disk_energy() const;
   double flexibility(const TipContact& i, const TipContact& j) const;
   /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
   /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
@@ -227,46 +217,20 @@ private:
   void solve_coulomb(const std::vector<TipContact>& tips, StepReport& report);
   /// Coulomb: (q, c)_{n+1} += dt^2 A^-1 B^T lambda.
   void correct_coulomb(const std::vector<TipContact>& tips);
-  /// Modal disk: m_q_next's boundary entries = Psi_B eta_next.
-  void form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q);
-  /// Adds the contact corrections gathered in m_deta (modal disk) or m_dq,
-  /// and the casing's, to the predicted state.
+  /// Adds the contact corrections gathered by the disk and casing parts to
+  /// the predicted state.
   void apply_corrections();
-  /// Modal disk: m_deta += f Psi(position, :)^T (dt^2 in f).
-  /// The correction f e_position in q, as eta += f Psi^T e_position and, for
-  /// the tips' entries of q, q_B += f Psi_B Psi_B^T e_position (44 entries a
-  /// term instead of Psi_B times the whole corrected eta).
-  void add_disk_correction(int position, double f) {
-    m_deta.noalias() += f * m_psi.row(position).transpose();
-    m_dq_boundary.noalias() += f * m_boundary_flexibility.col(m_boundary_index[position]);
-  }
-  /// Zeroes the corrections of a step (disk and casing, physical and modal).
+  /// Zeroes the corrections of a step (disk and casing).
   void clear_corrections();
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
-  /// over both parts, with m_q_next, m_c_next = x_{n+1}.
+  /// over both parts, x_{n+1} their next().
   double step_damping_work();
 
-  Eigen::MatrixXd m_kq;
-  Eigen::MatrixXd m_mq;
-  Eigen::MatrixXd m_mq_inverse; ///< A^-1 = (M^ + dt/2 C^)^-1 (M^-1 undamped)
-  Eigen::MatrixXd m_aq;         ///< A^-1 K^
-  Eigen::VectorXd m_cq;         ///< diag(C^) (empty undamped or with a full C^)
-  Eigen::MatrixXd m_cq_matrix;  ///< a full C^ (empty unless given)
-  Eigen::VectorXd m_cq_dq;      ///< C^ (q_{n+1} - q_{n-1}), for W_damp with a full C^
-  Eigen::MatrixXd m_bq;         ///< dt A^-1 C^ (damped only)
-  bool m_q_damped = false;
+  /// The bladed disk: physical or modal coordinates (disk_part.hpp).
+  std::unique_ptr<DiskPart> m_disk;
+  bool m_modal_disk = false;
   /// The casing: full sparse or modal (casing_part.hpp).
   std::unique_ptr<CasingPart> m_casing;
-  // Modal bladed disk: q = Psi eta.
-  bool m_modal_disk = false;
-  Eigen::MatrixXd m_psi;          ///< Psi, r x r, M^-orthonormal
-  Eigen::VectorXd m_lambda_disk;  ///< Lambda = diag(Psi^T K^ Psi)
-  std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q (modal disk)
-  std::vector<int> m_tip_position; ///< positions of the boundary (tip) entries in q
-  Eigen::MatrixXd m_psi_boundary; ///< Psi_B: the rows of Psi at m_boundary
-  std::vector<int> m_boundary_index; ///< q position -> index in m_boundary (-1: not a tip's)
-  Eigen::MatrixXd m_boundary_flexibility; ///< Psi_B Psi_B^T
-  Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary, m_dq_boundary;
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
@@ -274,8 +238,6 @@ private:
   CoulombGaussSeidel m_coulomb; ///< used under the coulomb law only
 
   int m_n = 0;
-  Eigen::VectorXd m_q, m_q_prev;
-  Eigen::VectorXd m_q_next, m_dq;
   Eigen::VectorXd m_gap, m_lambda;
   Eigen::VectorXd m_lambda_t; ///< tangential multipliers, one per tip
   bool m_lambda_t_zero = true;
