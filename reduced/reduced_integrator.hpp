@@ -7,16 +7,16 @@
 // physical coordinates, physical_disk_part.hpp, or the reduced modes,
 // modal_disk_part.hpp), the casing part (casing_part.hpp: the full casing,
 // full_casing_part.hpp, or its modes plus a static correction,
-// modal_casing_part.hpp), and the contact solve below (the active-set
-// multipliers of the sliding_sign law, or CoulombGaussSeidel). M^-1 and
-// M_c^-1 below are the parts' A^-1 and A_c^-1.
+// modal_casing_part.hpp), and the contact solve of the friction law
+// (tip_contact_solve.hpp: sliding_sign_solve.hpp, the active-set
+// multipliers, or coulomb_tip_solve.hpp, CoulombGaussSeidel). M^-1 and
+// M_c^-1 below are the parts' A^-1 and A_c^-1. A step:
 //
 //   q~ = 2 q_n - q_{n-1} - dt^2 M^-1 K^ q_n           (no external force on the disk)
 //   c~ = 2 c_n - c_{n-1} + dt^2 M_c^-1 (F_n - K_c c_n)
-//   W_ij = dt^2 (G_i^q M^-1 D_j^qT + G_i^c M_c^-1 D_j^cT), W lambda = -g~ on the
-//   active set; every negative lambda dropped at once, constraints closed by
-//   the correction added, until both hold;
-//   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
+//   lambda from the tips at the predicted state (the contact solve),
+//   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 B^qT, M_c^-1 B^cT) lambda,
+// B the solve's force rows.
 // The casing force F is held by the casing part (set_force) until changed.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
@@ -46,41 +46,10 @@
 // disk part, modal_disk_part.hpp; a damped disk, or a caller giving no
 // modes, gets the physical one.
 //
-// Friction law (the case's operating_point.friction_law). "sliding_sign"
-// (the default): the force rows D above, always sliding, as in the first
-// version, operation for operation. "coulomb" (issue 12, stick and slip):
-// per tip k two rows, in the order (n, t) of coulomb_gauss_seidel.hpp,
-//   B_n,k = G_k:  -e(u_k) on q,  +N on the casing (u, u_s) at alpha~_k,
-//   B_t,k = T_k:  +e(v_k) on q,  -N on the casing (v, v_s) at alpha~_k,
-// the predicted gap g~_k and forward slip increment s~_k over the step
-// (reduced_contact.hpp: Omega (R_t + u~_k) dt + (v~_k - v_k,n) - N . (c~_v - c_v,n)),
-//   [g; s] = [g~; s~] + W lambda,  W = dt^2 (B_q A_q^-1 B_q^T + B_c A_c^-1 B_c^T),
-// solved by CoulombGaussSeidel (warm-started with the previous step's
-// multipliers) on the tips whose predicted gap is negative; a tip left out
-// whose gap the correction would close (g~_k + W_k: lambda < 0) joins and the
-// problem is solved again. (q, c)_{n+1} = (q~, c~) + dt^2 (A_q^-1 B_q^T,
-// A_c^-1 B_c^T) lambda. lambda_n pushes the tip inward and the casing
-// outward; lambda_t is the tangential force on the tip along +v
-// (counter-clockwise), the casing takes -lambda_t at the contact point; a
-// slipping tip has lambda_t = -mu lambda_n sign(s). Contact work of the step
-// sum over rows lambda_r B_r (x_{n+1} - x_{n-1}) / 2. A solver failure
-// (no convergence, singular block, no local solution) or a non-finite
-// prediction throws ReducedIntegrationError naming the step. The step
-// report carries the certificate (reduced_coulomb_certificate) of the
-// step's problem: max_cone_violation [N]; max_stick_slip_residual, scaled
-// (dimensionless): stick |s_c| / sigma_c, slip max(-s_c e_c, 0) / sigma_c
-// (e_c = -sign(lambda_t,c), the slip direction the force claims) and
-// | |lambda_t,c| - mu lambda_n,c | / (mu lambda_n,c), with sigma_c =
-// |s~_c| + ||W_tc,:||_1 max_j |lambda_j| the size of the terms summed into
-// s_c (a well-conditioned slip test: s_c = 0 up to round-off is not counted
-// as slip against lambda_t), and open max |lambda_c| / max_j |lambda_j|.
-// CoulombGaussSeidel stops at a sweep whose largest change Delta <= 1e-14
-// max |lambda|; the contacts visited after c then moved s_c by at most
-// ||W_tc,:||_1 Delta, and forming y costs about m eps of its terms (m = 2
-// times the tips solved, <= 44): every scaled residual is <= 1e-14 + m eps
-// <= 2e-14 at a converged step. stick_slip_transitions (tips whose state open /
-// stick / slip changed since the previous step); n_stick, n_slip. With
-// mu = 0 a closed tip is classified slip (lambda_t = 0).
+// Friction law (the case's operating_point.friction_law): the contact solve
+// (tip_contact_solve.hpp). "sliding_sign": always sliding, as in the first
+// version, operation for operation (sliding_sign_solve.hpp). "coulomb": stick and slip, rows (n, t) per tip
+// solved by CoulombGaussSeidel (coulomb_tip_solve.hpp).
 
 #include <memory>
 #include <stdexcept>
@@ -98,6 +67,7 @@
 #include "casing_basis.hpp"
 #include "casing_part.hpp"
 #include "disk_part.hpp"
+#include "tip_contact_solve.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "critical_step.hpp"
 #include "failure_kinds.hpp"
@@ -164,27 +134,27 @@ public:
   const Eigen::VectorXd& casing() const { return m_casing->now(); }
   const Eigen::VectorXd& gap() const override { return m_gap; }
   /// Normal multipliers lambda_n of the last step, one per tip [N].
-  const Eigen::VectorXd& lambda() const override { return m_lambda; }
+  const Eigen::VectorXd& lambda() const override { return m_solve->lambda(); }
   /// Tangential multipliers of the last step, one per tip [N]: the friction
   /// force on the tip along +v (counter-clockwise); the casing takes the
   /// opposite. Coulomb: the solution's lambda_t; sliding_sign: the force the
   /// law applied, -mu sign(v_slide~) lambda_n. Zero on open tips.
-  const Eigen::VectorXd& tangential_lambda() const { return m_lambda_t; }
+  const Eigen::VectorXd& tangential_lambda() const { return m_solve->tangential_lambda(); }
   /// Coulomb law: each tip's state after the last step (all open before the
   /// first step and under sliding_sign).
-  const std::vector<ReducedContactState>& contact_states() const { return m_state; }
+  const std::vector<ReducedContactState>& contact_states() const { return m_solve->states(); }
   /// Coulomb law: the certificate of the last step's problem over the tips
   /// it was solved on (all zero when no tip closed).
-  const ReducedCoulombCertificate& last_certificate() const { return m_certificate; }
+  const ReducedCoulombCertificate& last_certificate() const { return m_solve->certificate(); }
   FrictionLaw friction_law() const { return m_law; }
   /// Coulomb law, the last step's problem (empty when no tip closed): the
   /// tips it was solved on, in order; W over them (rows and columns (n, t)
   /// per tip) [m/N]; the predicted [g~; s~] [m]; and every tip's geometry at
   /// the predicted state (the rows B: q_u, q_v, c_u, c_v, shape). For tests.
-  const std::vector<int>& coulomb_tips() const { return m_set; }
-  const Eigen::MatrixXd& coulomb_w() const { return m_w; }
-  const Eigen::VectorXd& coulomb_predicted() const { return m_rows; }
-  const std::vector<TipContact>& predicted_tips() const { return m_predicted_kept; }
+  const std::vector<int>& coulomb_tips() const { return m_solve->solved_tips(); }
+  const Eigen::MatrixXd& coulomb_w() const { return m_solve->w(); }
+  const Eigen::VectorXd& coulomb_predicted() const { return m_solve->predicted_rows(); }
+  const std::vector<TipContact>& predicted_tips() const { return m_solve->predicted_tips(); }
   double energy() const override;
   double initial_energy() const override { return m_initial_energy; }
   double external_work() const override { return m_external_work; }
@@ -204,19 +174,6 @@ public:
 private:
   /// start(casing_force, q0) after its set_force.
   void start_at(const Eigen::Ref<const Eigen::VectorXd>& q0);
-  double flexibility(const TipContact& i, const TipContact& j) const;
-  /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
-  /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
-  double direction_dot(const TipContact& j, const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b,
-                       const Eigen::VectorXd& c_a, const Eigen::VectorXd& c_b) const;
-  void solve_contact(const std::vector<TipContact>& tips);
-  /// Coulomb: [W_nn W_nt; W_tn W_tt] of tips i, j (rows of i, columns of j).
-  Eigen::Matrix2d coulomb_block(const TipContact& i, const TipContact& j) const;
-  /// Coulomb: lambda (normal and tangential), the states and the step
-  /// report's certificate fields for the predicted tips.
-  void solve_coulomb(const std::vector<TipContact>& tips, StepReport& report);
-  /// Coulomb: (q, c)_{n+1} += dt^2 A^-1 B^T lambda.
-  void correct_coulomb(const std::vector<TipContact>& tips);
   /// Adds the contact corrections gathered by the disk and casing parts to
   /// the predicted state.
   void apply_corrections();
@@ -231,33 +188,17 @@ private:
   bool m_modal_disk = false;
   /// The casing: full sparse or modal (casing_part.hpp).
   std::unique_ptr<CasingPart> m_casing;
+  /// The contact solve of the friction law (tip_contact_solve.hpp).
+  std::unique_ptr<TipContactSolve> m_solve;
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
   FrictionLaw m_law;
-  CoulombGaussSeidel m_coulomb; ///< used under the coulomb law only
 
   int m_n = 0;
-  Eigen::VectorXd m_gap, m_lambda;
-  Eigen::VectorXd m_lambda_t; ///< tangential multipliers, one per tip
-  bool m_lambda_t_zero = true;
-  // Coulomb law: states, certificate and work storage.
-  std::vector<ReducedContactState> m_state, m_state_before;
-  ReducedCoulombCertificate m_certificate;
-  Eigen::VectorXd m_warm; ///< (lambda_n, lambda_t) per tip, the next solve's start
-  Eigen::MatrixXd m_w;    ///< W over the solved tips, 2 m square
-  Eigen::VectorXd m_rows; ///< [g~; s~] over the solved tips
-  Eigen::VectorXd m_rows_lambda, m_rows_y;
-  std::vector<TipContact> m_predicted_kept; ///< Coulomb: the predicted tips of a closing step
+  Eigen::VectorXd m_gap;
   std::vector<TipContact> m_tips;           ///< tips at the current state
   std::vector<TipContact> m_predicted;      ///< tips at the predicted state of the step
-  // Work storage of solve_contact, kept between steps.
-  std::vector<char> m_active;
-  std::vector<char> m_known;
-  std::vector<int> m_set;
-  Eigen::MatrixXd m_w_all, m_wa;
-  Eigen::VectorXd m_minus_gap, m_la, m_residual;
-  Eigen::PartialPivLU<Eigen::MatrixXd> m_lu;
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;
