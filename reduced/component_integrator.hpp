@@ -122,6 +122,7 @@
 #include "failure_kinds.hpp"
 #include "history.hpp"
 #include "reduced_basis.hpp"
+#include "reduced_stepper.hpp"
 #include "rigid_casing.hpp"
 
 namespace rsi {
@@ -149,7 +150,7 @@ struct ComponentIntegratorOptions {
   double force_phase = 0.0;       ///< phi_f [rad], finite
 };
 
-class ComponentIntegrator {
+class ComponentIntegrator final : public ReducedStepper {
 public:
   /// `basis` and `casing` are copied from (not kept). Throws
   /// std::invalid_argument (bad options, a force of the wrong size, a casing
@@ -167,37 +168,37 @@ public:
 
   /// Zero initial conditions at t = 0 (the contact at t = 0 solved for a
   /// massless boundary).
-  void start();
+  void start() override;
   /// At rest at the reduced coordinates q0 (r entries; for a massless
   /// boundary only the interior part is used: the boundary follows (B)).
   void start(const Eigen::Ref<const Eigen::VectorXd>& q0);
   /// Step n -> n+1. Throws ComponentIntegrationError naming the step on a
   /// contact solve that fails or a non-finite state.
-  StepReport step();
+  StepReport step() override;
 
-  int step_index() const { return m_n; }
-  double time() const { return m_n * m_dt; }
+  int step_index() const override { return m_n; }
+  double time() const override { return m_n * m_dt; }
   /// x_n in the basis' coordinate order.
   Eigen::VectorXd q() const;
   /// The physical displacement row . x_n (row: a row of T, r entries).
   double response(const Eigen::Ref<const Eigen::RowVectorXd>& row) const;
   /// g_c at x_n, nc entries.
-  const Eigen::VectorXd& gap() const { return m_gap; }
+  const Eigen::VectorXd& gap() const override { return m_gap; }
   /// The multipliers of the step that produced x_n (CB: lambda_{n-1}, which
   /// enforced the contact at x_n; MacNeal: lambda_n, in balance with
   /// u_B^n), 3 nc entries (n, t1, t2 per contact).
-  const Eigen::VectorXd& lambda() const { return m_lambda; }
+  const Eigen::VectorXd& lambda() const override { return m_lambda; }
   const std::vector<ReducedContactState>& states() const { return m_state; }
   /// E_{n-1/2} (after n steps) [energy unit of the component].
-  double energy() const;
-  double initial_energy() const { return m_initial_energy; }
-  double contact_work() const { return m_contact_work; }
+  double energy() const override;
+  double initial_energy() const override { return m_initial_energy; }
+  double contact_work() const override { return m_contact_work; }
   /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).
-  double external_work() const { return m_external_work; }
+  double external_work() const override { return m_external_work; }
   bool has_external_force() const { return m_force; }
   /// f(t), r entries (zeros without a force).
   Eigen::VectorXd external_force(double t) const;
-  double damping_work() const { return m_damping_work; }
+  double damping_work() const override { return m_damping_work; }
   /// W of every step's contact problem (3 nc square; constant over a run).
   const Eigen::MatrixXd& contact_matrix() const { return m_w; }
   /// Gauss-Seidel sweeps summed over the run.

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "reduced_drive.hpp"
+
 namespace rsi {
 
 namespace {
@@ -21,6 +23,137 @@ int runaway_contact(const ComponentIntegrator& integrator) {
       return c;
   return -1;
 }
+
+/// The component run's monitor (component_run.hpp): the sampled rows, the
+/// certificate maxima of every step, the runaway and energy-balance tests.
+class ComponentMonitor final : public DriveMonitor {
+public:
+  /// Every argument must outlive the monitor (not owned).
+  ComponentMonitor(const ComponentIntegrator& integrator,
+                   const Eigen::Ref<const Eigen::RowVectorXd>& response_row,
+                   const ComponentRunOptions& options, const ComponentSampleSink& sink,
+                   ComponentRunSummary& summary)
+      : m_integrator(integrator)
+      , m_response_row(response_row)
+      , m_options(options)
+      , m_sink(sink)
+      , m_s(summary) {}
+
+  void started() override {
+    ComponentRunSummary& s = m_s;
+    s.steps_requested = m_options.steps;
+    s.dt = m_integrator.dt();
+    s.omega_max = m_integrator.omega_max();
+    s.critical_dt = m_integrator.critical_dt();
+    s.initial_energy = m_integrator.initial_energy();
+    s.energy_scale = std::abs(s.initial_energy);
+    record(m_integrator.energy());
+    s.status = "completed";
+    s.completed = true;
+    m_t0 = std::chrono::steady_clock::now();
+    m_c0 = std::clock();
+  }
+
+  void before_step(std::int64_t n) override {
+    if ((n + 1) % 1000 == 0 && m_options.checkpoint) m_options.checkpoint();
+  }
+
+  bool stops_on(const NumericalFailure& failure, std::int64_t /*n_next*/) override {
+    if (dynamic_cast<const ComponentIntegrationError*>(&failure) == nullptr) return false;
+    m_s.completed = false;
+    m_s.status = failure.what();
+    return true;
+  }
+
+  bool after_step(std::int64_t n, const StepReport& r) override {
+    ComponentRunSummary& s = m_s;
+    const ComponentIntegrator& integrator = m_integrator;
+    s.steps = n;
+    const int runaway = runaway_contact(integrator);
+    if (runaway >= 0) {
+      std::ostringstream m;
+      m.precision(6);
+      const RigidCasing& casing = integrator.casing();
+      m << "runaway at step " << n << " (t = " << integrator.time() << " s): contact node "
+        << runaway + 1 << " moved "
+        << integrator.gap()(runaway) - casing.imposed_gap(runaway, integrator.time())
+        << " along its normal, more than its radius " << casing.radius(runaway)
+        << " (the small-displacement model is left: an unstable step or a blow-up)";
+      s.completed = false;
+      s.status = m.str();
+      return false;
+    }
+    if (r.n_active > 0) {
+      s.max_penetration = std::max(s.max_penetration, r.max_penetration);
+      s.min_lambda = m_first_contact ? r.min_lambda : std::min(s.min_lambda, r.min_lambda);
+      m_first_contact = false;
+    }
+    s.max_complementarity = std::max(s.max_complementarity, r.max_complementarity);
+    s.max_cone_violation = std::max(s.max_cone_violation, r.max_cone_violation);
+    s.max_stick_slip_residual = std::max(s.max_stick_slip_residual, r.max_stick_slip_residual);
+    s.stick_slip_transitions += r.stick_slip_transitions;
+    s.stick_contact_steps += r.n_stick;
+    s.slip_contact_steps += r.n_slip;
+    const bool sample = n % m_options.output_every == 0;
+    const bool check = n % m_options.energy_every == 0 || n == m_options.steps;
+    if (sample && !check) record(std::numeric_limits<double>::quiet_NaN());
+    if (check) {
+      const double e = integrator.energy();
+      const double wc = integrator.contact_work(), wd = integrator.damping_work();
+      const double we = integrator.external_work(); // 0 without a force: the same arithmetic
+      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd, std::abs(we)});
+      const double error = std::abs(e - s.initial_energy - we - wc + wd);
+      s.energy_balance_error = std::max(s.energy_balance_error, error);
+      if (sample) record(e);
+      if (!(error <= m_options.balance_tolerance * s.energy_scale)) {
+        std::ostringstream m;
+        m.precision(6);
+        m << "energy balance broken at step " << n << " (t = " << integrator.time()
+          << " s): |E - E0 - W_ext - W_contact + W_damp| = " << error << " > "
+          << m_options.balance_tolerance << " x scale " << s.energy_scale
+          << " (instability or solver trouble)";
+        s.completed = false;
+        s.status = m.str();
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// The clocks and the final works, after the loop.
+  void finish() {
+    ComponentRunSummary& s = m_s;
+    s.integration_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_t0).count();
+    s.integration_cpu_seconds = static_cast<double>(std::clock() - m_c0) / CLOCKS_PER_SEC;
+    s.final_contact_work = m_integrator.contact_work();
+    s.final_damping_work = m_integrator.damping_work();
+    s.final_external_work = m_integrator.external_work();
+    s.sweeps = m_integrator.sweeps();
+  }
+
+private:
+  void record(double energy) {
+    const ComponentSample row{m_integrator.time(),
+                              m_integrator.response(m_response_row),
+                              m_integrator.gap(),
+                              m_integrator.lambda(),
+                              energy,
+                              m_integrator.contact_work(),
+                              m_integrator.damping_work(),
+                              m_integrator.external_work()};
+    m_sink(row);
+  }
+
+  const ComponentIntegrator& m_integrator;
+  const Eigen::Ref<const Eigen::RowVectorXd>& m_response_row;
+  const ComponentRunOptions& m_options;
+  const ComponentSampleSink& m_sink;
+  ComponentRunSummary& m_s;
+  bool m_first_contact = true;
+  std::chrono::steady_clock::time_point m_t0;
+  std::clock_t m_c0 = 0;
+};
 
 } // namespace
 
@@ -56,98 +189,10 @@ ComponentRunSummary run_component(ComponentIntegrator& integrator,
     throw std::invalid_argument(where + "output_every and energy_every must be >= 1");
   if (!(options.balance_tolerance > 0.0 && options.balance_tolerance < 1.0))
     throw std::invalid_argument(where + "balance_tolerance must be in (0, 1)");
-  if (!started) integrator.start();
   ComponentRunSummary s;
-  s.steps_requested = options.steps;
-  s.dt = integrator.dt();
-  s.omega_max = integrator.omega_max();
-  s.critical_dt = integrator.critical_dt();
-  s.initial_energy = integrator.initial_energy();
-  s.energy_scale = std::abs(s.initial_energy);
-  const auto record = [&](double energy) {
-    const ComponentSample row{integrator.time(),
-                              integrator.response(response_row),
-                              integrator.gap(),
-                              integrator.lambda(),
-                              energy,
-                              integrator.contact_work(),
-                              integrator.damping_work(),
-                              integrator.external_work()};
-    sink(row);
-  };
-  record(integrator.energy());
-  s.status = "completed";
-  s.completed = true;
-  bool first_contact = true;
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::clock_t c0 = std::clock();
-  for (std::int64_t n = 1; n <= options.steps; ++n) {
-    if (n % 1000 == 0 && options.checkpoint) options.checkpoint();
-    StepReport r;
-    try {
-      r = integrator.step();
-    } catch (const ComponentIntegrationError& e) {
-      s.completed = false;
-      s.status = e.what();
-      break;
-    }
-    s.steps = n;
-    const int runaway = runaway_contact(integrator);
-    if (runaway >= 0) {
-      std::ostringstream m;
-      m.precision(6);
-      const RigidCasing& casing = integrator.casing();
-      m << "runaway at step " << n << " (t = " << integrator.time() << " s): contact node "
-        << runaway + 1 << " moved "
-        << integrator.gap()(runaway) - casing.imposed_gap(runaway, integrator.time())
-        << " along its normal, more than its radius " << casing.radius(runaway)
-        << " (the small-displacement model is left: an unstable step or a blow-up)";
-      s.completed = false;
-      s.status = m.str();
-      break;
-    }
-    if (r.n_active > 0) {
-      s.max_penetration = std::max(s.max_penetration, r.max_penetration);
-      s.min_lambda = first_contact ? r.min_lambda : std::min(s.min_lambda, r.min_lambda);
-      first_contact = false;
-    }
-    s.max_complementarity = std::max(s.max_complementarity, r.max_complementarity);
-    s.max_cone_violation = std::max(s.max_cone_violation, r.max_cone_violation);
-    s.max_stick_slip_residual = std::max(s.max_stick_slip_residual, r.max_stick_slip_residual);
-    s.stick_slip_transitions += r.stick_slip_transitions;
-    s.stick_contact_steps += r.n_stick;
-    s.slip_contact_steps += r.n_slip;
-    const bool sample = n % options.output_every == 0;
-    const bool check = n % options.energy_every == 0 || n == options.steps;
-    if (sample && !check) record(std::numeric_limits<double>::quiet_NaN());
-    if (check) {
-      const double e = integrator.energy();
-      const double wc = integrator.contact_work(), wd = integrator.damping_work();
-      const double we = integrator.external_work(); // 0 without a force: the same arithmetic
-      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd, std::abs(we)});
-      const double error = std::abs(e - s.initial_energy - we - wc + wd);
-      s.energy_balance_error = std::max(s.energy_balance_error, error);
-      if (sample) record(e);
-      if (!(error <= options.balance_tolerance * s.energy_scale)) {
-        std::ostringstream m;
-        m.precision(6);
-        m << "energy balance broken at step " << n << " (t = " << integrator.time()
-          << " s): |E - E0 - W_ext - W_contact + W_damp| = " << error << " > "
-          << options.balance_tolerance << " x scale " << s.energy_scale
-          << " (instability or solver trouble)";
-        s.completed = false;
-        s.status = m.str();
-        break;
-      }
-    }
-  }
-  s.integration_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  s.integration_cpu_seconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
-  s.final_contact_work = integrator.contact_work();
-  s.final_damping_work = integrator.damping_work();
-  s.final_external_work = integrator.external_work();
-  s.sweeps = integrator.sweeps();
+  ComponentMonitor monitor(integrator, response_row, options, sink, s);
+  drive_reduced(integrator, options.steps, monitor, started);
+  monitor.finish();
   return s;
 }
 

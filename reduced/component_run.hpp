@@ -1,5 +1,6 @@
 #pragma once
-// A run of ComponentIntegrator (component_integrator.hpp): the sampled
+// A run of ComponentIntegrator (component_integrator.hpp), stepped by the
+// reduced time loop (reduced_drive.hpp) with the monitor below: the sampled
 // histories issue 12 asks for (time, a response dof, per contact node the
 // gap, lambda_n, lambda_t1, lambda_t2, energy and works) and a summary with
 // the worst certificate over every step (not only the sampled ones).

@@ -4,6 +4,13 @@
 #include <cmath>
 #include <string>
 
+#include "full_casing_part.hpp"
+#include "modal_disk_part.hpp"
+#include "modal_casing_part.hpp"
+#include "physical_disk_part.hpp"
+#include "coulomb_tip_solve.hpp"
+#include "sliding_sign_solve.hpp"
+
 namespace rsi {
 
 namespace {
@@ -12,23 +19,6 @@ bool finite_non_negative(double x) {
   return std::isfinite(x) && x >= 0.0;
 }
 
-// What to change, for the messages of ReducedIntegrationError (issue 13,
-// class 8). The case's M is positive definite (checked when it loads) and
-// so is T^T M T for a basis T of full rank: a mass that fails here is a
-// basis that lost its rank in rounding.
-const std::string kReducedMassRemedy =
-    "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: "
-    "keep fewer modes (--modes, or the campaign's modes) or use another --method";
-const std::string kCasingMassRemedy =
-    "; change casing.section or material.density (the loader checks the casing's M: report "
-    "this case)";
-const std::string kStepRemedy =
-    "; use a smaller step (time.step, or --time-step and the campaign's time_step of a reduced "
-    "run)";
-const std::string kContactRemedy =
-    "; change operating_point.friction_coefficient (friction that cancels the contacts' normal "
-    "flexibility) or use a smaller step (time.step, --time-step)";
-
 } // namespace
 
 ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& casing, double dt,
@@ -36,741 +26,160 @@ ReducedIntegrator::ReducedIntegrator(const ReducedBasis& basis, const Casing& ca
                                      const ReducedDamping& damping,
                                      const CasingBasis* casing_basis,
                                      const ReducedModes* disk_modes)
-    : m_kq(basis.stiffness)
-    , m_mq(basis.mass)
-    , m_casing_damping(damping.casing)
-    , m_kc(casing.stiffness)
-    , m_kc_rows(m_kc)
-    , m_mc(casing.mass)
-    , m_dt(dt)
+    : m_dt(dt)
     , m_mu(contact.friction_coefficient())
     , m_contact(contact)
-    , m_law(contact.friction_law())
-    , m_coulomb(1, contact.friction_coefficient()) {
-  const Eigen::Index r = m_kq.rows();
+    , m_law(contact.friction_law()) {
+  const Eigen::Index r = basis.n_reduced();
+  bool disk_damped = false;
   if (damping.bladed_disk.size() != 0) {
     if (damping.bladed_disk.size() != r ||
         !damping.bladed_disk.unaryExpr(&finite_non_negative).all())
       throw std::invalid_argument("ReducedIntegrator: the bladed-disk damping must have " +
                                   std::to_string(r) + " finite entries >= 0");
-    m_q_damped = (damping.bladed_disk.array() != 0.0).any();
+    disk_damped = (damping.bladed_disk.array() != 0.0).any();
   }
+  Eigen::MatrixXd disk_damping_matrix;
   if (damping.bladed_disk_matrix.size() != 0) {
     if (damping.bladed_disk.size() != 0 || damping.bladed_disk_matrix.rows() != r ||
         damping.bladed_disk_matrix.cols() != r || !damping.bladed_disk_matrix.allFinite())
       throw std::invalid_argument("ReducedIntegrator: a full bladed-disk damping must be " +
                                   std::to_string(r) + " x " + std::to_string(r) +
                                   ", finite, and given without the diagonal one");
-    m_cq_matrix = damping.bladed_disk_matrix;
-    m_q_damped = (m_cq_matrix.array() != 0.0).any();
-    if (!m_q_damped) m_cq_matrix.resize(0, 0);
+    disk_damping_matrix = damping.bladed_disk_matrix;
+    disk_damped = (disk_damping_matrix.array() != 0.0).any();
+    if (!disk_damped) disk_damping_matrix.resize(0, 0);
   }
-  if (!finite_non_negative(m_casing_damping.alpha) || !finite_non_negative(m_casing_damping.beta))
+  if (!finite_non_negative(damping.casing.alpha) || !finite_non_negative(damping.casing.beta))
     throw std::invalid_argument(
         "ReducedIntegrator: the casing's Rayleigh alpha and beta must be finite and >= 0");
-  m_c_damped = m_casing_damping.any();
 
-  // A = M^ + dt/2 C^ (M^ undamped), factorized once.
-  Eigen::MatrixXd a_q = m_mq;
-  if (m_q_damped && m_cq_matrix.size() != 0) {
-    a_q += 0.5 * dt * m_cq_matrix;
-  } else if (m_q_damped) {
-    m_cq = damping.bladed_disk;
-    a_q.diagonal() += 0.5 * dt * m_cq;
-  }
-  const Eigen::LLT<Eigen::MatrixXd> mq_factor(a_q);
-  if (mq_factor.info() != Eigen::Success)
-    throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
-                                  (m_q_damped ? " plus dt/2 C^" : "") +
-                                  " is not positive definite" + kReducedMassRemedy);
-  m_mq_inverse = mq_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
-  m_tip_position = basis.boundary_position;
-  const bool modal = disk_modes != nullptr && !m_q_damped;
-  if (!modal) m_aq = mq_factor.solve(m_kq); // the physical predictor's M^-1 K^ only
-  if (m_q_damped)
-    m_bq = m_cq_matrix.size() != 0 ? Eigen::MatrixXd(dt * (m_mq_inverse * m_cq_matrix))
-                                   : Eigen::MatrixXd(dt * (m_mq_inverse * m_cq.asDiagonal()));
-  if (modal) {
-    if (disk_modes->shapes.rows() != r || disk_modes->shapes.cols() != r ||
-        disk_modes->omega_squared.size() != r)
-      throw std::invalid_argument("ReducedIntegrator: the reduced modes must be " +
-                                  std::to_string(r) + " x " + std::to_string(r));
-    m_modal_disk = true;
-    m_psi = disk_modes->shapes;
-    m_lambda_disk = disk_modes->omega_squared;
-    m_boundary = basis.boundary_position;
-    m_psi_boundary.resize(static_cast<Eigen::Index>(m_boundary.size()), r);
-    m_boundary_index.assign(static_cast<size_t>(r), -1);
-    for (size_t i = 0; i < m_boundary.size(); ++i) {
-      m_psi_boundary.row(static_cast<Eigen::Index>(i)) = m_psi.row(m_boundary[i]);
-      m_boundary_index[static_cast<size_t>(m_boundary[i])] = static_cast<int>(i);
-    }
-    m_boundary_flexibility = m_psi_boundary * m_psi_boundary.transpose();
-    m_eta = m_eta_prev = m_eta_next = m_deta = Eigen::VectorXd::Zero(r);
-    m_q_boundary = m_dq_boundary =
-        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m_boundary.size()));
-  }
-
-  const int nc = casing.n_dofs();
-  m_force = Eigen::VectorXd::Zero(nc);
-  m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
-  m_c_next = m_dc = m_casing_work = m_kc_c = Eigen::VectorXd::Zero(nc);
-  if (m_c_damped) m_c_delta = m_c_damping = Eigen::VectorXd::Zero(nc);
-  if (casing_basis != nullptr) {
-    if (casing_basis->shapes.rows() != nc || casing_basis->size() < 1 ||
-        casing_basis->omega_squared.size() != casing_basis->size())
-      throw std::invalid_argument("ReducedIntegrator: the casing basis must have " +
-                                  std::to_string(nc) + " rows (the casing's dofs), got " +
-                                  std::to_string(casing_basis->shapes.rows()));
-    m_modal_casing = true;
-    m_phi = casing_basis->shapes;
-    m_omega_squared = casing_basis->omega_squared;
-    m_modal_gamma = m_casing_damping.alpha + m_casing_damping.beta * m_omega_squared.array();
-    const Eigen::ArrayXd a = 1.0 + 0.5 * dt * m_modal_gamma.array();
-    if (!(a.minCoeff() > 0.0) || !a.allFinite())
-      throw ReducedIntegrationError(
-          "reduced integrator: the modal casing's 1 + dt/2 gamma_i is not positive (gamma_i = "
-          "alpha + beta omega_i^2 of damping.rayleigh); damping.rayleigh.alpha and beta must be "
-          ">= 0 and finite");
-    m_modal_a_inverse = a.inverse().matrix();
-    m_phi_scaled_t = m_modal_a_inverse.asDiagonal() * m_phi.transpose();
-    m_mc_inverse = m_phi * m_phi_scaled_t;
-    const int m = casing_basis->size();
-    m_force_modal = m_p = m_p_prev = m_p_next = m_dp = Eigen::VectorXd::Zero(m);
-    return;
-  }
-
-  // A_c = M_c + dt/2 (alpha M_c + beta K_c) (M_c undamped).
-  const Eigen::SparseMatrix<double> a_c =
-      m_c_damped
-          ? Eigen::SparseMatrix<double>((1.0 + 0.5 * dt * m_casing_damping.alpha) * casing.mass +
-                                        (0.5 * dt * m_casing_damping.beta) * casing.stiffness)
-          : casing.mass;
-  m_mc_factor.compute(a_c);
-  // Eigen's LDL^T flags only zero pivots: positive definite means every D_jj > 0.
-  if (m_mc_factor.info() != Eigen::Success || !(m_mc_factor.vectorD().minCoeff() > 0.0))
-    throw ReducedIntegrationError(std::string("reduced integrator: the casing mass matrix") +
-                                  (m_c_damped ? " plus dt/2 C_c" : "") +
-                                  " is not positive definite" + kCasingMassRemedy);
-  m_mc_inverse = m_mc_factor.solve(Eigen::MatrixXd::Identity(nc, nc));
-  m_mc_order.resize(nc);
-  for (int i = 0; i < nc; ++i)
-    m_mc_order[i] =
-        m_mc_factor.permutationP().size() > 0 ? m_mc_factor.permutationP().indices()(i) : i;
-  m_mc_inverse_d = m_mc_factor.vectorD().cwiseInverse();
-}
-
-double ReducedIntegrator::casing_flops_per_step() const {
-  const auto n = static_cast<double>(m_kc.rows());
-  if (m_modal_casing) {
-    const auto m = static_cast<double>(m_phi.cols());
-    double flops = 2.0 * n * m + 10.0 * m;
-    if (m_c_damped) flops += 2.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 5.0 * n;
-    return flops;
-  }
-  const auto nnz_l = static_cast<double>(m_mc_factor.matrixL().nestedExpression().nonZeros());
-  double flops = 2.0 * static_cast<double>(m_kc.nonZeros()) + 4.0 * nnz_l + 5.0 * n;
-  if (m_c_damped) flops += 4.0 * static_cast<double>(m_mc.nonZeros() + m_kc.nonZeros()) + 10.0 * n;
-  return flops;
+  // The disk in its modes when undamped and given them (modal_disk_part.hpp).
+  m_modal_disk = disk_modes != nullptr && !disk_damped;
+  if (m_modal_disk)
+    m_disk = std::make_unique<ModalDiskPart>(basis, dt, *disk_modes);
+  else
+    m_disk = std::make_unique<PhysicalDiskPart>(basis, dt, disk_damped, damping.bladed_disk,
+                                                disk_damping_matrix);
+  if (casing_basis != nullptr)
+    m_casing = std::make_unique<ModalCasingPart>(casing, *casing_basis, dt, damping.casing);
+  else
+    m_casing = std::make_unique<FullCasingPart>(casing, dt, damping.casing);
+  // The contact solve of the case's friction law, over both parts.
+  if (m_law == FrictionLaw::coulomb)
+    m_solve = std::make_unique<CoulombTipSolve>(*m_disk, *m_casing, dt, m_mu);
+  else
+    m_solve = std::make_unique<SlidingSignSolve>(*m_disk, *m_casing, dt, m_mu);
 }
 
 double ReducedIntegrator::flops_per_step() const {
-  const auto r = static_cast<double>(m_kq.rows());
-  const double disk = m_modal_disk ? 2.0 * static_cast<double>(m_boundary.size()) * r + 5.0 * r
-                                   : 2.0 * r * r + 4.0 * r;
-  double flops = disk + 64.0 * m_contact.n_tips() + casing_flops_per_step();
-  if (m_q_damped) flops += 2.0 * r * r + 5.0 * r;
-  if (m_cq_matrix.size() != 0) flops += 2.0 * r * r; // C^ dq of W_damp
-  return flops;
+  return m_disk->flops_per_step() + 64.0 * m_contact.n_tips() + casing_flops_per_step();
 }
 
 double ReducedIntegrator::energy() const {
-  return casing_energy() + (m_modal_disk ? 0.5 * ((m_eta - m_eta_prev) / m_dt).squaredNorm() +
-                                               0.5 * m_eta_prev.dot(m_lambda_disk.cwiseProduct(m_eta))
-                                         : disk_energy());
-}
-
-double ReducedIntegrator::disk_energy() const {
-  const Eigen::VectorXd vq = (m_q - m_q_prev) / m_dt;
-  return 0.5 * vq.dot(m_mq * vq) + 0.5 * m_q_prev.dot(m_kq * m_q);
-}
-
-double ReducedIntegrator::casing_energy() const {
-  // Modal casing: c = Phi p with Phi^T M_c Phi = I and Phi^T K_c Phi =
-  // diag(omega^2) (casing_basis.hpp), so the same E_{n-1/2} in O(N_c), and
-  // the one of the equations the integrator advances (diag(omega^2) p).
-  if (m_modal_casing)
-    return 0.5 * ((m_p - m_p_prev) / m_dt).squaredNorm() +
-           0.5 * m_p_prev.dot(m_omega_squared.cwiseProduct(m_p));
-  const Eigen::VectorXd vc = (m_c - m_c_prev) / m_dt;
-  return 0.5 * vc.dot(m_mc * vc) + 0.5 * m_c_prev.dot(m_kc * m_c);
-}
-
-void ReducedIntegrator::tip_displacement(Eigen::VectorXd& out) const {
-  // On the modal path q_n's boundary entries are kept (form_boundary).
-  out.resize(static_cast<Eigen::Index>(m_tip_position.size()));
-  for (size_t i = 0; i < m_tip_position.size(); ++i)
-    out(static_cast<Eigen::Index>(i)) = m_q(m_tip_position[i]);
-}
-
-Eigen::VectorXd ReducedIntegrator::q() const {
-  if (m_modal_disk) return m_psi * m_eta;
-  return m_q;
-}
-
-void ReducedIntegrator::form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q) {
-  m_q_boundary.noalias() = m_psi_boundary * eta;
-  for (size_t i = 0; i < m_boundary.size(); ++i)
-    q(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
+  return m_casing->energy() + m_disk->energy();
 }
 
 void ReducedIntegrator::set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
-  if (casing_force.size() != m_force.size())
+  if (casing_force.size() != m_casing->n_dofs())
     throw std::invalid_argument("ReducedIntegrator::set_force: the force has " +
                                 std::to_string(casing_force.size()) + " entries, the casing " +
-                                std::to_string(m_force.size()) + " dofs");
-  m_force = casing_force;
-  m_force_zero = (m_force.array() == 0.0).all();
-  if (m_modal_casing) m_force_modal.noalias() = m_phi.transpose() * m_force;
+                                std::to_string(m_casing->n_dofs()) + " dofs");
+  m_casing->set_force(casing_force);
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force) {
-  start(casing_force, Eigen::VectorXd::Zero(m_kq.rows()));
+  start(casing_force, Eigen::VectorXd::Zero(m_disk->n_reduced()));
+}
+
+void ReducedIntegrator::start() {
+  start_at(Eigen::VectorXd::Zero(m_disk->n_reduced()));
 }
 
 void ReducedIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
                               const Eigen::Ref<const Eigen::VectorXd>& q0) {
-  if (q0.size() != m_kq.rows())
+  if (q0.size() != m_disk->n_reduced())
     throw std::invalid_argument("ReducedIntegrator::start: q0 has " + std::to_string(q0.size()) +
-                                " entries, the reduced model " + std::to_string(m_kq.rows()));
+                                " entries, the reduced model " +
+                                std::to_string(m_disk->n_reduced()));
   set_force(casing_force);
+  start_at(q0);
+}
+
+void ReducedIntegrator::start_at(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   m_n = 0;
-  m_q = q0;
-  if (q0.isZero(0.0)) {
-    m_q_prev = m_q;
-  } else {
-    // q_{-1} = q0 + dt^2/2 M^-1 (-K^ q0): at rest, with M^ itself (not A).
-    const Eigen::LLT<Eigen::MatrixXd> mass(m_mq);
-    if (mass.info() != Eigen::Success)
-      throw ReducedIntegrationError(
-          "reduced integrator: the reduced mass matrix is not positive definite" +
-          kReducedMassRemedy);
-    m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
-  }
-  if (m_modal_disk) {
-    // eta = Psi^T M^ q, the same start in modal coordinates; q, q_prev whole.
-    m_eta.noalias() = m_psi.transpose() * (m_mq * m_q);
-    m_eta_prev = m_eta - (0.5 * m_dt * m_dt) * m_lambda_disk.cwiseProduct(m_eta);
-    if (q0.isZero(0.0)) m_eta_prev = m_eta;
-    m_q.noalias() = m_psi * m_eta;
-    m_q_prev.noalias() = m_psi * m_eta_prev;
-  }
-  m_c = Eigen::VectorXd::Zero(m_kc.rows());
-  if (m_modal_casing) {
-    // At rest p_{-1} = dt^2/2 Phi^T F (the modal mass is I), c = Phi p.
-    m_p.setZero();
-    m_p_prev = 0.5 * m_dt * m_dt * m_force_modal;
-    m_c_prev.noalias() = m_phi * m_p_prev;
-  } else if (m_c_damped) {
-    // At rest c_{-1} = dt^2/2 M_c^-1 F with M_c itself (not A_c), so c_1 = c_{-1}.
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass(m_mc);
-    if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
-      throw ReducedIntegrationError(
-          "reduced integrator: the casing mass matrix is not positive definite" +
-          kCasingMassRemedy);
-    m_c_prev = 0.5 * m_dt * m_dt * mass.solve(m_force);
-  } else {
-    m_c_prev = 0.5 * m_dt * m_dt * m_mc_factor.solve(m_force);
-  }
-  m_contact.evaluate(m_q, m_q, m_c, m_c, m_dt, 0.0, m_tips);
+  m_disk->start(q0);
+  m_casing->start();
+  m_contact.evaluate(m_disk->now(), m_disk->now(), m_casing->now(), m_casing->now(), m_dt, 0.0,
+                     m_tips);
   m_predicted = m_tips;
   m_gap.resize(m_contact.n_tips());
   for (int k = 0; k < m_contact.n_tips(); ++k)
     m_gap(k) = m_tips[k].gap;
-  m_lambda = Eigen::VectorXd::Zero(m_contact.n_tips());
-  m_lambda_t = Eigen::VectorXd::Zero(m_contact.n_tips());
-  m_lambda_t_zero = true;
-  m_state.assign(m_contact.n_tips(), ReducedContactState::open);
-  m_state_before = m_state;
-  m_warm = Eigen::VectorXd::Zero(2 * m_contact.n_tips());
-  m_certificate = ReducedCoulombCertificate{};
+  m_solve->start(m_contact.n_tips());
   m_initial_energy = energy();
   m_external_work = m_contact_work = m_damping_work = 0.0;
 }
 
-double ReducedIntegrator::flexibility(const TipContact& i, const TipContact& j) const {
-  // G_i^q = -e(u_i), D_j^q = -e(u_j) - mu s_j e(v_j).
-  double w = m_mq_inverse(i.q_u, j.q_u) + m_mu * j.sign * m_mq_inverse(i.q_u, j.q_v);
-  // G_i^c = sum_a N_a e(cu_a), D_j^c = sum_b N_b (e(cu_b) + mu s_j e(cv_b)).
-  for (int a = 0; a < 4; ++a) {
-    if (i.c_u[a] < 0) continue;
-    for (int b = 0; b < 4; ++b) {
-      if (j.c_u[b] < 0) continue;
-      w += i.shape[a] * j.shape[b] *
-           (m_mc_inverse(i.c_u[a], j.c_u[b]) + m_mu * j.sign * m_mc_inverse(i.c_u[a], j.c_v[b]));
-    }
-  }
-  return m_dt * m_dt * w;
-}
-
-double ReducedIntegrator::direction_dot(const TipContact& j, const Eigen::VectorXd& q_a,
-                                        const Eigen::VectorXd& q_b, const Eigen::VectorXd& c_a,
-                                        const Eigen::VectorXd& c_b) const {
-  double sum = -(q_a(j.q_u) - q_b(j.q_u)) - m_mu * j.sign * (q_a(j.q_v) - q_b(j.q_v));
-  for (int b = 0; b < 4; ++b)
-    if (j.c_u[b] >= 0)
-      sum += j.shape[b] *
-             ((c_a(j.c_u[b]) - c_b(j.c_u[b])) + m_mu * j.sign * (c_a(j.c_v[b]) - c_b(j.c_v[b])));
-  return sum;
-}
-
-void ReducedIntegrator::solve_contact(const std::vector<TipContact>& tips) {
-  const int nt = static_cast<int>(tips.size());
-  m_lambda.setZero(nt);
-  int n_active = 0;
-  for (int k = 0; k < nt; ++k)
-    n_active += tips[k].gap < 0.0;
-  if (n_active == 0) return;
-  m_active.resize(nt);
-  for (int k = 0; k < nt; ++k)
-    m_active[k] = tips[k].gap < 0.0;
-  m_w_all.resize(nt, nt);
-  m_known.assign(static_cast<size_t>(nt) * nt, 0);
-  auto w = [&](int i, int j) {
-    if (!m_known[i * nt + j]) {
-      m_w_all(i, j) = flexibility(tips[i], tips[j]);
-      m_known[i * nt + j] = 1;
-    }
-    return m_w_all(i, j);
-  };
-  for (int round = 0; round < 2 * nt + 2; ++round) {
-    m_set.clear();
-    for (int k = 0; k < nt; ++k)
-      if (m_active[k]) m_set.push_back(k);
-    const int m = static_cast<int>(m_set.size());
-    m_lambda.setZero(nt);
-    if (m == 0) return;
-    m_wa.resize(m, m);
-    m_minus_gap.resize(m);
-    for (int a = 0; a < m; ++a) {
-      m_minus_gap(a) = -tips[m_set[a]].gap;
-      for (int b = 0; b < m; ++b)
-        m_wa(a, b) = w(m_set[a], m_set[b]);
-    }
-    m_lu.compute(m_wa);
-    m_la = m_lu.solve(m_minus_gap);
-    m_residual.noalias() = m_wa * m_la;
-    m_residual -= m_minus_gap;
-    if (!m_la.allFinite() || m_residual.norm() > 1e-8 * m_minus_gap.norm())
-      throw ReducedIntegrationError("reduced integrator: singular contact matrix W at step " +
-                                    std::to_string(m_n + 1) + " (" + std::to_string(m) +
-                                    " active tips)" + kContactRemedy);
-    bool changed = false;
-    for (int a = 0; a < m; ++a)
-      if (m_la(a) < 0.0) m_active[m_set[a]] = 0, changed = true; // drop every negative multiplier
-    if (changed) continue;
-    for (int a = 0; a < m; ++a)
-      m_lambda(m_set[a]) = m_la(a);
-    for (int k = 0; k < nt; ++k) { // constraints the correction would close
-      if (m_active[k]) continue;
-      double g = tips[k].gap;
-      for (int a = 0; a < m; ++a)
-        g += w(k, m_set[a]) * m_la(a);
-      if (g < 0.0) m_active[k] = 1, changed = true;
-    }
-    if (!changed) return;
-  }
-  throw ReducedIntegrationError("reduced integrator: the active set did not settle at step " +
-                                std::to_string(m_n + 1) + kStepRemedy);
-}
-
-Eigen::Matrix2d ReducedIntegrator::coulomb_block(const TipContact& i, const TipContact& j) const {
-  // Rows B_n,i = (-e(u_i); +N_i on c_u), B_t,i = (+e(v_i); -N_i on c_v); the
-  // same for the columns of j.
-  double nn = m_mq_inverse(i.q_u, j.q_u);
-  double nt = -m_mq_inverse(i.q_u, j.q_v);
-  double tn = -m_mq_inverse(i.q_v, j.q_u);
-  double tt = m_mq_inverse(i.q_v, j.q_v);
-  for (int a = 0; a < 4; ++a) {
-    if (i.c_u[a] < 0) continue;
-    for (int b = 0; b < 4; ++b) {
-      if (j.c_u[b] < 0) continue;
-      const double nab = i.shape[a] * j.shape[b];
-      nn += nab * m_mc_inverse(i.c_u[a], j.c_u[b]);
-      nt -= nab * m_mc_inverse(i.c_u[a], j.c_v[b]);
-      tn -= nab * m_mc_inverse(i.c_v[a], j.c_u[b]);
-      tt += nab * m_mc_inverse(i.c_v[a], j.c_v[b]);
-    }
-  }
-  const double dt2 = m_dt * m_dt;
-  Eigen::Matrix2d w;
-  w << dt2 * nn, dt2 * nt, dt2 * tn, dt2 * tt;
-  return w;
-}
-
-void ReducedIntegrator::solve_coulomb(const std::vector<TipContact>& tips, StepReport& report) {
-  const int nt = static_cast<int>(tips.size());
-  m_state_before.swap(m_state);
-  m_state.assign(nt, ReducedContactState::open);
-  m_lambda.setZero(nt);
-  m_lambda_t.setZero(nt);
-  m_certificate = ReducedCoulombCertificate{};
-  m_active.assign(nt, 0);
-  m_set.clear();
-  m_w.resize(0, 0);
-  m_rows.resize(0);
-  int n_active = 0;
-  for (int k = 0; k < nt; ++k) {
-    if (!std::isfinite(tips[k].gap) || !std::isfinite(tips[k].slip))
-      throw ReducedIntegrationError("reduced integrator: non-finite predicted gap or slip of tip " +
-                                    std::to_string(k + 1) + " at step " + std::to_string(m_n + 1) +
-                                    " (the state blew up)" + kStepRemedy);
-    if (tips[k].gap < 0.0) m_active[k] = 1, ++n_active;
-  }
-  if (n_active > 0) {
-    for (int round = 0;; ++round) {
-      m_set.clear();
-      for (int k = 0; k < nt; ++k)
-        if (m_active[k]) m_set.push_back(k);
-      const int m = static_cast<int>(m_set.size());
-      m_w.resize(2 * m, 2 * m);
-      m_rows.resize(2 * m);
-      m_rows_lambda.resize(2 * m);
-      for (int a = 0; a < m; ++a) {
-        const TipContact& tip = tips[m_set[a]];
-        m_rows(2 * a) = tip.gap;
-        m_rows(2 * a + 1) = tip.slip;
-        m_rows_lambda.segment<2>(2 * a) = m_warm.segment<2>(2 * m_set[a]);
-        for (int b = 0; b < m; ++b)
-          m_w.block<2, 2>(2 * a, 2 * b) = coulomb_block(tip, tips[m_set[b]]);
-      }
-      const CoulombGaussSeidelReport solved = m_coulomb.solve(m_w, m_rows, m_rows_lambda);
-      if (!solved.converged())
-        throw ReducedIntegrationError("reduced integrator: Coulomb contact problem at step " +
-                                      std::to_string(m_n + 1) + ": " + solved.message +
-                                      kContactRemedy);
-      for (int a = 0; a < m; ++a)
-        m_warm.segment<2>(2 * m_set[a]) = m_rows_lambda.segment<2>(2 * a);
-      bool joined = false; // tips left out whose gap the correction would close
-      for (int k = 0; k < nt; ++k) {
-        if (m_active[k]) continue;
-        double g = tips[k].gap;
-        for (int a = 0; a < m; ++a) {
-          const Eigen::Matrix2d w = coulomb_block(tips[k], tips[m_set[a]]);
-          g += w(0, 0) * m_rows_lambda(2 * a) + w(0, 1) * m_rows_lambda(2 * a + 1);
-        }
-        if (g < 0.0) m_active[k] = 1, joined = true;
-      }
-      if (!joined) break;
-      if (round >= nt)
-        throw ReducedIntegrationError(
-            "reduced integrator: the set of closing tips did not settle at step " +
-            std::to_string(m_n + 1) + kStepRemedy);
-    }
-    m_predicted_kept = tips;
-    const std::vector<ReducedContactState>& states = m_coulomb.states();
-    const int m = static_cast<int>(m_set.size());
-    for (int a = 0; a < m; ++a) {
-      m_lambda(m_set[a]) = m_rows_lambda(2 * a);
-      m_lambda_t(m_set[a]) = m_rows_lambda(2 * a + 1);
-      m_state[m_set[a]] = states[a];
-    }
-    m_certificate = reduced_coulomb_certificate(m_w, m_rows, 1, m_mu, m_rows_lambda, states);
-    // The scaled stick/slip residual (reduced_integrator.hpp).
-    m_rows_y = m_rows;
-    m_rows_y.noalias() += m_w * m_rows_lambda;
-    const double largest = m_rows_lambda.cwiseAbs().maxCoeff();
-    double scaled = largest > 0.0 ? m_certificate.max_open_residual / largest : 0.0;
-    for (int a = 0; a < m; ++a) {
-      const double ln = m_rows_lambda(2 * a);
-      const double lt = m_rows_lambda(2 * a + 1);
-      const double slip = m_rows_y(2 * a + 1);
-      const double sigma =
-          std::abs(m_rows(2 * a + 1)) + m_w.row(2 * a + 1).cwiseAbs().sum() * largest;
-      if (states[a] == ReducedContactState::stick) {
-        if (sigma > 0.0) scaled = std::max(scaled, std::abs(slip) / sigma);
-      } else if (states[a] == ReducedContactState::slip) {
-        if (lt != 0.0 && sigma > 0.0) {
-          const double e = lt > 0.0 ? -1.0 : 1.0; // the slip direction lambda_t opposes
-          scaled = std::max(scaled, std::max(-slip * e, 0.0) / sigma);
-        }
-        if (m_mu * ln > 0.0)
-          scaled = std::max(scaled, std::abs(std::abs(lt) - m_mu * ln) / (m_mu * ln));
-      }
-    }
-    report.max_cone_violation = m_certificate.max_cone_violation;
-    report.max_stick_slip_residual = scaled;
-  }
-  // Tips outside the solved set stay open with lambda = 0: their start is 0.
-  for (int k = 0; k < nt; ++k) {
-    if (!m_active[k]) m_warm.segment<2>(2 * k).setZero();
-    if (m_state[k] != m_state_before[k]) ++report.stick_slip_transitions;
-    report.n_stick += m_state[k] == ReducedContactState::stick;
-    report.n_slip += m_state[k] == ReducedContactState::slip;
-  }
-}
-
-void ReducedIntegrator::correct_coulomb(const std::vector<TipContact>& tips) {
-  const double dt2 = m_dt * m_dt;
-  clear_corrections();
-  for (int j = 0; j < m_lambda.size(); ++j) {
-    if (m_lambda(j) == 0.0 && m_lambda_t(j) == 0.0) continue;
-    const TipContact& tip = tips[j];
-    const double f = dt2 * m_lambda(j);
-    const double ft = dt2 * m_lambda_t(j);
-    if (m_modal_disk) {
-      add_disk_correction(tip.q_u, -f);
-      if (ft != 0.0) add_disk_correction(tip.q_v, ft);
-    } else {
-      m_dq -= f * m_mq_inverse.col(tip.q_u);
-      if (ft != 0.0) m_dq += ft * m_mq_inverse.col(tip.q_v);
-    }
-    add_casing_correction(tip, f, -ft);
-  }
-  apply_corrections();
-}
-
 void ReducedIntegrator::clear_corrections() {
-  m_dq.setZero();
-  m_dc.setZero();
-  if (m_modal_casing) {
-    m_dp.setZero();
-    m_casing_terms.clear();
-  }
-  if (m_modal_disk) {
-    m_deta.setZero();
-    m_dq_boundary.setZero();
-  }
+  m_disk->clear_correction();
+  m_casing->clear_correction();
 }
 
 void ReducedIntegrator::apply_corrections() {
-  if (m_modal_disk) {
-    // q_B = Psi_B (eta~ + d eta) = q~_B + Psi_B Psi_B^T (sum of f e): the
-    // predictor's q~_B plus the corrections' columns (add_disk_correction).
-    m_eta_next += m_deta;
-    m_q_boundary += m_dq_boundary;
-    for (size_t i = 0; i < m_boundary.size(); ++i)
-      m_q_next(m_boundary[i]) = m_q_boundary(static_cast<Eigen::Index>(i));
-  } else {
-    m_q_next += m_dq;
-  }
-  apply_casing_correction();
-}
-
-void ReducedIntegrator::add_casing_correction(const TipContact& tip, double f_u, double f_v) {
-  // c_u and c_v interleaved per node, as summed before the modal casing
-  // existed (the full-casing histories stay bit for bit).
-  Eigen::VectorXd& sum = m_modal_casing ? m_dp : m_dc;
-  const Eigen::MatrixXd& columns = m_modal_casing ? m_phi_scaled_t : m_mc_inverse;
-  for (int b = 0; b < 4; ++b) {
-    if (tip.c_u[b] < 0) continue;
-    sum += (f_u * tip.shape[b]) * columns.col(tip.c_u[b]);
-    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_u[b], f_u * tip.shape[b]);
-    if (f_v == 0.0) continue;
-    sum += (f_v * tip.shape[b]) * columns.col(tip.c_v[b]);
-    if (m_modal_casing) m_casing_terms.emplace_back(tip.c_v[b], f_v * tip.shape[b]);
-  }
-}
-
-void ReducedIntegrator::apply_casing_correction() {
-  if (m_modal_casing) {
-    // c = Phi (p~ + dp) = c~ + sum of f Phi diag(1/a) Phi^T e_dof: with fewer
-    // terms than modes the columns of m_mc_inverse (n_c each) cost less than
-    // Phi p again (n_c N_c); the same c up to round-off.
-    m_p_next += m_dp;
-    if (static_cast<Eigen::Index>(m_casing_terms.size()) < m_p_next.size()) {
-      for (const auto& [dof, f] : m_casing_terms)
-        m_c_next.noalias() += f * m_mc_inverse.col(dof);
-    } else {
-      m_c_next.noalias() = m_phi * m_p_next;
-    }
-  } else {
-    m_c_next += m_dc;
-  }
-}
-
-void ReducedIntegrator::predict_modal_casing() {
-  const double dt2 = m_dt * m_dt;
-  const Eigen::Index m = m_p.size();
-  for (Eigen::Index i = 0; i < m; ++i) {
-    double acc = -m_omega_squared(i) * m_p(i);
-    if (!m_force_zero) acc += m_force_modal(i);
-    if (m_c_damped) acc -= m_modal_gamma(i) * (m_p(i) - m_p_prev(i)) / m_dt;
-    m_p_next(i) = 2.0 * m_p(i) - m_p_prev(i) + dt2 * m_modal_a_inverse(i) * acc;
-  }
-  m_c_next.noalias() = m_phi * m_p_next;
-}
-
-void ReducedIntegrator::predict_casing() {
-  if (m_modal_casing) {
-    predict_modal_casing();
-    return;
-  }
-  // With P M_c P^T = L D L^T: y = P (F - K_c c_n), y <- L^-T D^-1 L^-1 y by
-  // Eigen's triangular solves on the factor (no permutation in place), and
-  // c~(j) = 2 c_n(j) - c_{n-1}(j) + dt^2 y(P(j)).
-  const int n = static_cast<int>(m_c.size());
-  const double dt2 = m_dt * m_dt;
-  m_kc_rows.multiply(m_c, m_kc_c);
-  if (m_c_damped) {
-    // K_c c_n + C_c (c_n - c_{n-1}) / dt, C_c = alpha M_c + beta K_c.
-    m_c_delta = m_c - m_c_prev;
-    m_c_damping.noalias() = m_mc * m_c_delta;
-    m_c_damping *= m_casing_damping.alpha;
-    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
-    m_kc_c += m_c_damping / m_dt;
-  }
-  for (int i = 0; i < n; ++i)
-    m_casing_work(m_mc_order[i]) = m_force_zero ? -m_kc_c(i) : m_force(i) - m_kc_c(i);
-  m_mc_factor.matrixL().solveInPlace(m_casing_work);
-  m_casing_work.array() *= m_mc_inverse_d.array();
-  m_mc_factor.matrixU().solveInPlace(m_casing_work);
-  for (int j = 0; j < n; ++j)
-    m_c_next(j) = 2.0 * m_c(j) - m_c_prev(j) + dt2 * m_casing_work(m_mc_order[j]);
+  m_disk->apply_correction();
+  m_casing->apply_correction();
 }
 
 double ReducedIntegrator::step_damping_work() {
   double work = 0.0;
-  if (m_q_damped) {
-    m_dq = m_q_next - m_q_prev;
-    if (m_cq_matrix.size() != 0) {
-      m_cq_dq.noalias() = m_cq_matrix * m_dq;
-      work += m_dq.dot(m_cq_dq);
-    } else {
-      work += m_dq.dot(m_cq.cwiseProduct(m_dq));
-    }
-  }
-  if (m_c_damped) {
-    m_c_delta = m_c_next - m_c_prev;
-    m_c_damping.noalias() = m_mc * m_c_delta;
-    m_c_damping *= m_casing_damping.alpha;
-    m_c_damping.noalias() += m_casing_damping.beta * (m_kc * m_c_delta);
-    work += m_c_delta.dot(m_c_damping);
-  }
+  if (m_disk->damped()) work += m_disk->step_damping_product();
+  if (m_casing->damped()) work += m_casing->step_damping_product();
   return work / (4.0 * m_dt);
 }
 
 StepReport ReducedIntegrator::step() {
-  const double dt2 = m_dt * m_dt;
-  if (m_modal_disk) {
-    m_eta_next = 2.0 * m_eta - m_eta_prev;
-    m_eta_next -= dt2 * m_lambda_disk.cwiseProduct(m_eta);
-    form_boundary(m_eta_next, m_q_next);
-  } else {
-    m_q_next = 2.0 * m_q - m_q_prev;
-    m_q_next.noalias() -= dt2 * (m_aq * m_q);
-    if (m_q_damped) { // - dt A^-1 C^ (q_n - q_{n-1})
-      m_dq = m_q - m_q_prev;
-      m_q_next.noalias() -= m_bq * m_dq;
-    }
-  }
-  predict_casing();
+  m_disk->predict();
+  m_casing->predict();
   const double t_next = (m_n + 1) * m_dt;
-  m_contact.evaluate(m_q_next, m_q, m_c_next, m_c, m_dt, t_next, m_predicted);
+  m_contact.evaluate(m_disk->next(), m_disk->now(), m_casing->next(), m_casing->now(), m_dt,
+                     t_next, m_predicted);
   StepReport report;
-  const bool coulomb = m_law == FrictionLaw::coulomb;
-  if (coulomb)
-    solve_coulomb(m_predicted, report);
-  else
-    solve_contact(m_predicted);
-
-  const bool corrected = m_lambda.any();
-  if (coulomb) {
-    if (corrected) correct_coulomb(m_predicted);
-  } else if (corrected) {
+  m_solve->solve(m_predicted, m_n + 1, report);
+  const Eigen::VectorXd& lambda = m_solve->lambda();
+  const bool corrected = lambda.any();
+  if (corrected) {
     clear_corrections();
-    for (int j = 0; j < m_lambda.size(); ++j) {
-      if (m_lambda(j) == 0.0) continue;
-      const TipContact& tip = m_predicted[j];
-      const double f = dt2 * m_lambda(j);
-      if (m_modal_disk) {
-        add_disk_correction(tip.q_u, -f);
-        if (m_mu * tip.sign != 0.0) add_disk_correction(tip.q_v, -f * m_mu * tip.sign);
-      } else {
-        m_dq -= f * (m_mq_inverse.col(tip.q_u) + m_mu * tip.sign * m_mq_inverse.col(tip.q_v));
-      }
-      if (m_modal_casing) {
-        add_casing_correction(tip, f, f * m_mu * tip.sign);
-      } else {
-        for (int b = 0; b < 4; ++b)
-          if (tip.c_u[b] >= 0)
-            m_dc += f * tip.shape[b] *
-                    (m_mc_inverse.col(tip.c_u[b]) + m_mu * tip.sign * m_mc_inverse.col(tip.c_v[b]));
-      }
-    }
+    m_solve->gather_correction(m_predicted, *m_disk, *m_casing);
     apply_corrections();
   }
   // Works of step n: (F_n + R_n)^T (x_{n+1} - x_{n-1}) / 2.
-  if (!m_force_zero) {
-    m_casing_work = m_c_next - m_c_prev;
-    m_external_work += 0.5 * m_force.dot(m_casing_work);
-  }
-  if (coulomb) {
-    for (int j = 0; j < m_lambda.size(); ++j)
-      if (m_lambda(j) != 0.0) {
-        // B_n . dx and B_t . dx over dx = x_{n+1} - x_{n-1}, at tip j's entries.
-        const TipContact& tip = m_predicted[j];
-        double normal = -(m_q_next(tip.q_u) - m_q_prev(tip.q_u));
-        double tangential = m_q_next(tip.q_v) - m_q_prev(tip.q_v);
-        for (int b = 0; b < 4; ++b)
-          if (tip.c_u[b] >= 0) {
-            normal += tip.shape[b] * (m_c_next(tip.c_u[b]) - m_c_prev(tip.c_u[b]));
-            tangential -= tip.shape[b] * (m_c_next(tip.c_v[b]) - m_c_prev(tip.c_v[b]));
-          }
-        m_contact_work += 0.5 * (m_lambda(j) * normal + m_lambda_t(j) * tangential);
-      }
-  } else {
-    for (int j = 0; j < m_lambda.size(); ++j)
-      if (m_lambda(j) != 0.0)
-        m_contact_work += 0.5 * m_lambda(j) *
-                          direction_dot(m_predicted[j], m_q_next, m_q_prev, m_c_next, m_c_prev);
-    // The tangential force the law applied, -mu sign lambda (tangential_lambda()).
-    if (corrected) {
-      for (int j = 0; j < m_lambda.size(); ++j)
-        m_lambda_t(j) = m_lambda(j) != 0.0 ? -m_mu * m_predicted[j].sign * m_lambda(j) : 0.0;
-      m_lambda_t_zero = false;
-    } else if (!m_lambda_t_zero) {
-      m_lambda_t.setZero();
-      m_lambda_t_zero = true;
-    }
-  }
+  if (!m_casing->force_zero()) m_external_work += m_casing->step_external_work();
+  m_solve->add_contact_work(m_predicted, corrected, m_contact_work);
 
-  if (m_q_damped || m_c_damped) m_damping_work += step_damping_work();
+  if (m_disk->damped() || m_casing->damped()) m_damping_work += step_damping_work();
 
-  m_q_prev.swap(m_q);
-  m_q.swap(m_q_next);
-  m_c_prev.swap(m_c);
-  m_c.swap(m_c_next);
-  if (m_modal_casing) {
-    m_p_prev.swap(m_p);
-    m_p.swap(m_p_next);
-  }
-  if (m_modal_disk) {
-    m_eta_prev.swap(m_eta);
-    m_eta.swap(m_eta_next);
-  }
+  m_disk->advance();
+  m_casing->advance();
   ++m_n;
 
   // The tips at the new state: those predicted unless a correction moved it
   // (then m_predicted keeps the predicted signs compared below).
   if (corrected)
-    m_contact.evaluate(m_q, m_q_prev, m_c, m_c_prev, m_dt, t_next, m_tips);
+    m_contact.evaluate(m_disk->now(), m_disk->previous(), m_casing->now(), m_casing->previous(),
+                       m_dt, t_next, m_tips);
   else
     m_tips.swap(m_predicted);
-  for (int k = 0; k < m_lambda.size(); ++k) {
+  for (int k = 0; k < lambda.size(); ++k) {
     const double g = m_tips[k].gap;
-    const double l = m_lambda(k);
+    const double l = lambda(k);
     m_gap(k) = g;
     report.max_penetration = std::max(report.max_penetration, -g);
     report.min_lambda = std::min(report.min_lambda, l);
     report.max_complementarity = std::max(report.max_complementarity, std::abs(l * g));
     if (l == 0.0) continue;
     ++report.n_active;
-    if (!coulomb && m_mu > 0.0 && m_tips[k].sign != m_predicted[k].sign) {
-      ++report.sliding_reversals;
-      report.max_friction_residual = std::max(
-          report.max_friction_residual, m_mu * l * std::abs(m_tips[k].sign - m_predicted[k].sign));
-    }
+    m_solve->report_tip(m_tips[k], m_predicted[k], l, report);
   }
   return report;
 }

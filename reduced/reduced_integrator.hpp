@@ -1,24 +1,23 @@
 #pragma once
 // Central differences with forward-increment Lagrange multipliers for the
 // reduced bladed disk (dense K^, M^, coordinates q) coupled through contact
-// with the full casing (sparse K_c, M_c): SPEC §3, written independently
-// of the reference integrator.
+// with the casing (sparse K_c, M_c): SPEC §3, written independently of the
+// reference integrator. It is composed of parts that combine freely, each
+// stating its equations in its header: the bladed-disk part (disk_part.hpp:
+// physical coordinates, physical_disk_part.hpp, or the reduced modes,
+// modal_disk_part.hpp), the casing part (casing_part.hpp: the full casing,
+// full_casing_part.hpp, or its modes plus a static correction,
+// modal_casing_part.hpp), and the contact solve of the friction law
+// (tip_contact_solve.hpp: sliding_sign_solve.hpp, the active-set
+// multipliers, or coulomb_tip_solve.hpp, CoulombGaussSeidel). M^-1 and
+// M_c^-1 below are the parts' A^-1 and A_c^-1. A step:
 //
 //   q~ = 2 q_n - q_{n-1} - dt^2 M^-1 K^ q_n           (no external force on the disk)
 //   c~ = 2 c_n - c_{n-1} + dt^2 M_c^-1 (F_n - K_c c_n)
-//   W_ij = dt^2 (G_i^q M^-1 D_j^qT + G_i^c M_c^-1 D_j^cT), W lambda = -g~ on the
-//   active set; every negative lambda dropped at once, constraints closed by
-//   the correction added, until both hold;
-//   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 D^qT, M_c^-1 D^cT) lambda.
-// M^-1 (r x r) and M_c^-1 (dense, 4 dofs per casing node) are formed once
-// from Cholesky factorizations whose status is checked; they serve the
-// contact rows. The predictor applies M^-1 K^ (dense, formed once) and the
-// sparse LDL^T factor of M_c, P M_c P^T = L D L^T, whose ordering P is
-// applied while the right-hand side is gathered and the solution scattered,
-// so a step allocates nothing and permutes nothing in place.
-// The casing force F is piecewise constant (SPEC §2: on during the first
-// steps, then zero): it is held (set_force) until changed, and a zero force
-// costs nothing per step.
+//   lambda from the tips at the predicted state (the contact solve),
+//   (q, c)_{n+1} = (q~, c~) + dt^2 (M^-1 B^qT, M_c^-1 B^cT) lambda,
+// B the solve's force rows.
+// The casing force F is held by the casing part (set_force) until changed.
 // Energy E_{n+1/2} = sum over both parts of 1/2 v^T M v + 1/2 x_n^T K x_{n+1},
 // computed when asked (its dense products would double the cost of a step).
 //
@@ -40,70 +39,19 @@
 // E = E_0 + W_ext + W_contact - W_damp to round-off. Without damping A = M
 // and the step is the undamped one, operation for operation.
 //
-// Reduced casing (issue 14; casing_basis.hpp): with a CasingBasis the
-// casing is c = Phi p, Phi^T M_c Phi = I, Phi^T K_c Phi = Omega^2 = diag, and
-// the casing's part of the step is, mode by mode (C_c = alpha M_c + beta K_c
-// is diagonal there, gamma_i = alpha + beta omega_i^2, a_i = 1 + dt/2 gamma_i),
-//   p~_i = 2 p_i - p_{i,prev} + dt^2 (f_i - omega_i^2 p_i - gamma_i (p_i - p_{i,prev}) / dt) / a_i,
-// f = Phi^T F, then c~ = Phi p~ (every casing dof is read by the 22 tips'
-// contact evaluation: the reconstruction is the cost, 2 n_c N_c flops). The
-// contact rows stay the physical ones at the casing dofs; A_c^-1 becomes
-// Phi diag(1/a) Phi^T (the flexibility the modal casing has), and the
-// correction is applied to p: p += dt^2 diag(1/a) Phi^T B_c^T lambda, then
-// c = Phi p again. Energy, works and W_damp keep their physical formulas:
-// with c = Phi p they are the modal ones to round-off. The critical step is
-// 2 / max(omega_max(K^, M^), max omega_i).
+// Reduced casing (casing_basis.hpp): the modal casing part,
+// modal_casing_part.hpp.
 //
-// Modal bladed disk (undamped runs given the reduced modes, critical_step.hpp
-// reduced_modes, computed once with the basis): K^ Psi = M^ Psi Lambda,
-// Psi^T M^ Psi = I, q = Psi eta, and the disk's step is mode by mode,
-//   eta~_i = 2 eta_i - eta_{i,prev} - dt^2 lambda_i eta_i,
-// central differences being invariant under the change of coordinates (the
-// same scheme, not an approximation). Only the boundary entries of q are
-// formed, q_B = Psi_B eta (2 n_B r flops: the contact reads nothing else);
-// the correction is eta += dt^2 Psi^T B_q^T lambda (M^-1 = Psi Psi^T, rows
-// of Psi at the tip dofs), and the energy 1/2 |eta_{n+1} - eta_n|^2/dt^2 +
-// 1/2 eta_n^T Lambda eta_{n+1} costs O(r): the physical path's 2 r^2 step
-// and 4 r^2 energy (every row at one step a row) become 2 n_B r and O(r).
-// q() forms Psi eta when asked. A damped disk (C^ is not diagonal in Psi)
-// keeps the physical path, as does a caller giving no modes.
+// Modal bladed disk (undamped runs given the reduced modes): the modal
+// disk part, modal_disk_part.hpp; a damped disk, or a caller giving no
+// modes, gets the physical one.
 //
-// Friction law (the case's operating_point.friction_law). "sliding_sign"
-// (the default): the force rows D above, always sliding, as in the first
-// version, operation for operation. "coulomb" (issue 12, stick and slip):
-// per tip k two rows, in the order (n, t) of coulomb_gauss_seidel.hpp,
-//   B_n,k = G_k:  -e(u_k) on q,  +N on the casing (u, u_s) at alpha~_k,
-//   B_t,k = T_k:  +e(v_k) on q,  -N on the casing (v, v_s) at alpha~_k,
-// the predicted gap g~_k and forward slip increment s~_k over the step
-// (reduced_contact.hpp: Omega (R_t + u~_k) dt + (v~_k - v_k,n) - N . (c~_v - c_v,n)),
-//   [g; s] = [g~; s~] + W lambda,  W = dt^2 (B_q A_q^-1 B_q^T + B_c A_c^-1 B_c^T),
-// solved by CoulombGaussSeidel (warm-started with the previous step's
-// multipliers) on the tips whose predicted gap is negative; a tip left out
-// whose gap the correction would close (g~_k + W_k: lambda < 0) joins and the
-// problem is solved again. (q, c)_{n+1} = (q~, c~) + dt^2 (A_q^-1 B_q^T,
-// A_c^-1 B_c^T) lambda. lambda_n pushes the tip inward and the casing
-// outward; lambda_t is the tangential force on the tip along +v
-// (counter-clockwise), the casing takes -lambda_t at the contact point; a
-// slipping tip has lambda_t = -mu lambda_n sign(s). Contact work of the step
-// sum over rows lambda_r B_r (x_{n+1} - x_{n-1}) / 2. A solver failure
-// (no convergence, singular block, no local solution) or a non-finite
-// prediction throws ReducedIntegrationError naming the step. The step
-// report carries the certificate (reduced_coulomb_certificate) of the
-// step's problem: max_cone_violation [N]; max_stick_slip_residual, scaled
-// (dimensionless): stick |s_c| / sigma_c, slip max(-s_c e_c, 0) / sigma_c
-// (e_c = -sign(lambda_t,c), the slip direction the force claims) and
-// | |lambda_t,c| - mu lambda_n,c | / (mu lambda_n,c), with sigma_c =
-// |s~_c| + ||W_tc,:||_1 max_j |lambda_j| the size of the terms summed into
-// s_c (a well-conditioned slip test: s_c = 0 up to round-off is not counted
-// as slip against lambda_t), and open max |lambda_c| / max_j |lambda_j|.
-// CoulombGaussSeidel stops at a sweep whose largest change Delta <= 1e-14
-// max |lambda|; the contacts visited after c then moved s_c by at most
-// ||W_tc,:||_1 Delta, and forming y costs about m eps of its terms (m = 2
-// times the tips solved, <= 44): every scaled residual is <= 1e-14 + m eps
-// <= 2e-14 at a converged step. stick_slip_transitions (tips whose state open /
-// stick / slip changed since the previous step); n_stick, n_slip. With
-// mu = 0 a closed tip is classified slip (lambda_t = 0).
+// Friction law (the case's operating_point.friction_law): the contact solve
+// (tip_contact_solve.hpp). "sliding_sign": always sliding, as in the first
+// version, operation for operation (sliding_sign_solve.hpp). "coulomb": stick and slip, rows (n, t) per tip
+// solved by CoulombGaussSeidel (coulomb_tip_solve.hpp).
 
+#include <memory>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -117,12 +65,16 @@
 
 #include "case_file.hpp"
 #include "casing_basis.hpp"
+#include "casing_part.hpp"
+#include "disk_part.hpp"
+#include "tip_contact_solve.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "critical_step.hpp"
 #include "failure_kinds.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
+#include "reduced_stepper.hpp"
 #include "sparse_rows.hpp"
 
 namespace rsi {
@@ -141,7 +93,7 @@ struct ReducedDamping {
   RayleighDamping casing;      ///< alpha, beta >= 0 of the full casing
 };
 
-class ReducedIntegrator {
+class ReducedIntegrator final : public ReducedStepper {
 public:
   /// `contact` must outlive the integrator (not owned). Throws
   /// std::invalid_argument for a damping of the wrong size, negative or not
@@ -158,6 +110,8 @@ public:
   /// From rest under the casing force f0 at t = 0; f0 is held for the steps
   /// that follow until set_force changes it.
   void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
+  /// From rest under the casing force held (set_force; zero unless set).
+  void start() override;
   /// The same from rest at the bladed-disk coordinates q0 (a free vibration:
   /// q_{-1} = q0 - dt^2/2 M^-1 K^ q0, so (q_1 - q_{-1}) / (2 dt) = 0).
   void start(const Eigen::Ref<const Eigen::VectorXd>& casing_force,
@@ -165,182 +119,86 @@ public:
   /// Holds F (n_c entries, [N]) as the casing force of every following step.
   void set_force(const Eigen::Ref<const Eigen::VectorXd>& casing_force);
   /// Step n -> n+1 under the held force F_n.
-  StepReport step();
+  StepReport step() override;
 
-  int step_index() const { return m_n; }
-  double time() const { return m_n * m_dt; }
+  int step_index() const override { return m_n; }
+  double time() const override { return m_n * m_dt; }
   /// The reduced coordinates q_n (formed from eta on the modal path).
-  Eigen::VectorXd q() const;
+  Eigen::VectorXd q() const { return m_disk->q(); }
   /// The boundary (tip) entries of q_n, (u_1, v_1, u_2, v_2, ...) in the
   /// tip polar frame [m]: the physical tip displacements (the boundary is
   /// kept physical by every reduction).
-  void tip_displacement(Eigen::VectorXd& out) const;
+  void tip_displacement(Eigen::VectorXd& out) const { m_disk->tip_displacement(out); }
   /// Whether the disk runs in modal coordinates (undamped and asked for).
   bool modal_bladed_disk() const { return m_modal_disk; }
-  const Eigen::VectorXd& casing() const { return m_c; }
-  const Eigen::VectorXd& gap() const { return m_gap; }
+  const Eigen::VectorXd& casing() const { return m_casing->now(); }
+  const Eigen::VectorXd& gap() const override { return m_gap; }
   /// Normal multipliers lambda_n of the last step, one per tip [N].
-  const Eigen::VectorXd& lambda() const { return m_lambda; }
+  const Eigen::VectorXd& lambda() const override { return m_solve->lambda(); }
   /// Tangential multipliers of the last step, one per tip [N]: the friction
   /// force on the tip along +v (counter-clockwise); the casing takes the
   /// opposite. Coulomb: the solution's lambda_t; sliding_sign: the force the
   /// law applied, -mu sign(v_slide~) lambda_n. Zero on open tips.
-  const Eigen::VectorXd& tangential_lambda() const { return m_lambda_t; }
+  const Eigen::VectorXd& tangential_lambda() const { return m_solve->tangential_lambda(); }
   /// Coulomb law: each tip's state after the last step (all open before the
   /// first step and under sliding_sign).
-  const std::vector<ReducedContactState>& contact_states() const { return m_state; }
+  const std::vector<ReducedContactState>& contact_states() const { return m_solve->states(); }
   /// Coulomb law: the certificate of the last step's problem over the tips
   /// it was solved on (all zero when no tip closed).
-  const ReducedCoulombCertificate& last_certificate() const { return m_certificate; }
+  const ReducedCoulombCertificate& last_certificate() const { return m_solve->certificate(); }
   FrictionLaw friction_law() const { return m_law; }
   /// Coulomb law, the last step's problem (empty when no tip closed): the
   /// tips it was solved on, in order; W over them (rows and columns (n, t)
   /// per tip) [m/N]; the predicted [g~; s~] [m]; and every tip's geometry at
   /// the predicted state (the rows B: q_u, q_v, c_u, c_v, shape). For tests.
-  const std::vector<int>& coulomb_tips() const { return m_set; }
-  const Eigen::MatrixXd& coulomb_w() const { return m_w; }
-  const Eigen::VectorXd& coulomb_predicted() const { return m_rows; }
-  const std::vector<TipContact>& predicted_tips() const { return m_predicted_kept; }
-  double energy() const;
-  double initial_energy() const { return m_initial_energy; }
-  double external_work() const { return m_external_work; }
-  double contact_work() const { return m_contact_work; }
+  const std::vector<int>& coulomb_tips() const { return m_solve->solved_tips(); }
+  const Eigen::MatrixXd& coulomb_w() const { return m_solve->w(); }
+  const Eigen::VectorXd& coulomb_predicted() const { return m_solve->predicted_rows(); }
+  const std::vector<TipContact>& predicted_tips() const { return m_solve->predicted_tips(); }
+  double energy() const override;
+  double initial_energy() const override { return m_initial_energy; }
+  double external_work() const override { return m_external_work; }
+  double contact_work() const override { return m_contact_work; }
   /// W_damp up to step n-1 [J], >= 0 (0 undamped).
-  double damping_work() const { return m_damping_work; }
+  double damping_work() const override { return m_damping_work; }
   /// Flops of a contact-free, force-free step: the dense M^-1 K^ q (2 r^2),
   /// 4 r of vector updates, about 64 per tip for the gaps, sliding
   /// velocities and step report, and the casing's flops (below). Damped,
   /// also dt A^-1 C^ (q_n - q_{n-1}) (2 r^2) and about 5 r for the
   /// difference and W_damp.
   double flops_per_step() const;
-  /// The full casing's part: K_c c (2 nnz(K_c)), its LDL^T solve (4 nnz(L_c)
-  /// + n_c) and 4 n_c of vector updates: the floor under every reduced run.
-  /// Damped, also M_c and K_c times a difference twice (force and W_damp:
-  /// 4 (nnz(M_c) + nnz(K_c))) and about 10 n_c. A modal casing: the
-  /// reconstruction c = Phi p (2 n_c m) and about 10 m (damped: the same
-  /// W_damp products as the full casing).
-  double casing_flops_per_step() const;
+  /// The casing part's (full_casing_part.hpp, modal_casing_part.hpp): the
+  /// floor under every reduced run.
+  double casing_flops_per_step() const { return m_casing->flops_per_step(); }
 
 private:
-  /// E_{n-1/2} of the reduced bladed disk in physical coordinates q.
-  double disk_energy() const;
-  /// E_{n-1/2} of the casing (modal coordinates when reduced).
-  double casing_energy() const;
-  double flexibility(const TipContact& i, const TipContact& j) const;
-  /// D_j . (a - b) over (q, c): the force direction of tip j applied to the
-  /// displacement from (q_b, c_b) to (q_a, c_a), read at its entries only.
-  double direction_dot(const TipContact& j, const Eigen::VectorXd& q_a, const Eigen::VectorXd& q_b,
-                       const Eigen::VectorXd& c_a, const Eigen::VectorXd& c_b) const;
-  void solve_contact(const std::vector<TipContact>& tips);
-  /// Coulomb: [W_nn W_nt; W_tn W_tt] of tips i, j (rows of i, columns of j).
-  Eigen::Matrix2d coulomb_block(const TipContact& i, const TipContact& j) const;
-  /// Coulomb: lambda (normal and tangential), the states and the step
-  /// report's certificate fields for the predicted tips.
-  void solve_coulomb(const std::vector<TipContact>& tips, StepReport& report);
-  /// Coulomb: (q, c)_{n+1} += dt^2 A^-1 B^T lambda.
-  void correct_coulomb(const std::vector<TipContact>& tips);
-  /// m_c_next = c~ from m_c, m_c_prev and the held force.
-  void predict_casing();
-  /// The same for a modal casing, from m_p, m_p_prev (c~ = Phi p~).
-  void predict_modal_casing();
-  /// The casing's correction A_c^-1 (N^T f_u on tip's c_u + N^T f_v on its
-  /// c_v) added to m_dc (full casing) or to m_dp (modal casing, diag(1/a)
-  /// Phi^T in place of A_c^-1); f already carries dt^2.
-  void add_casing_correction(const TipContact& tip, double f_u, double f_v);
-  /// c_{n+1} += the correction gathered in m_dc or m_dp.
-  void apply_casing_correction();
-  /// Modal disk: m_q_next's boundary entries = Psi_B eta_next.
-  void form_boundary(const Eigen::VectorXd& eta, Eigen::VectorXd& q);
-  /// Adds the contact corrections gathered in m_deta (modal disk) or m_dq,
-  /// and the casing's, to the predicted state.
+  /// start(casing_force, q0) after its set_force.
+  void start_at(const Eigen::Ref<const Eigen::VectorXd>& q0);
+  /// Adds the contact corrections gathered by the disk and casing parts to
+  /// the predicted state.
   void apply_corrections();
-  /// Modal disk: m_deta += f Psi(position, :)^T (dt^2 in f).
-  /// The correction f e_position in q, as eta += f Psi^T e_position and, for
-  /// the tips' entries of q, q_B += f Psi_B Psi_B^T e_position (44 entries a
-  /// term instead of Psi_B times the whole corrected eta).
-  void add_disk_correction(int position, double f) {
-    m_deta.noalias() += f * m_psi.row(position).transpose();
-    m_dq_boundary.noalias() += f * m_boundary_flexibility.col(m_boundary_index[position]);
-  }
-  /// Zeroes the corrections of a step (disk and casing, physical and modal).
+  /// Zeroes the corrections of a step (disk and casing).
   void clear_corrections();
   /// W_damp of the step just taken: (x_{n+1} - x_{n-1})^T C (x_{n+1} - x_{n-1}) / (4 dt)
-  /// over both parts, with m_q_next, m_c_next = x_{n+1}.
+  /// over both parts, x_{n+1} their next().
   double step_damping_work();
 
-  Eigen::MatrixXd m_kq;
-  Eigen::MatrixXd m_mq;
-  Eigen::MatrixXd m_mq_inverse; ///< A^-1 = (M^ + dt/2 C^)^-1 (M^-1 undamped)
-  Eigen::MatrixXd m_aq;         ///< A^-1 K^
-  Eigen::VectorXd m_cq;         ///< diag(C^) (empty undamped or with a full C^)
-  Eigen::MatrixXd m_cq_matrix;  ///< a full C^ (empty unless given)
-  Eigen::VectorXd m_cq_dq;      ///< C^ (q_{n+1} - q_{n-1}), for W_damp with a full C^
-  Eigen::MatrixXd m_bq;         ///< dt A^-1 C^ (damped only)
-  RayleighDamping m_casing_damping;
-  bool m_q_damped = false;
-  bool m_c_damped = false;
-  Eigen::SparseMatrix<double, Eigen::RowMajor> m_kc;
-  SparseRows m_kc_rows; ///< K_c for the per-step product (the full run's row kernels)
-  Eigen::SparseMatrix<double, Eigen::RowMajor> m_mc;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_mc_factor; ///< of A_c = M_c + dt/2 C_c
-  std::vector<int> m_mc_order;    ///< P as an index map: (P x)(m_mc_order[i]) = x(i)
-  Eigen::VectorXd m_mc_inverse_d; ///< 1 / D of the casing factor
-  Eigen::MatrixXd m_mc_inverse; ///< A_c^-1 (modal casing: Phi diag(1/a) Phi^T)
-  // Modal bladed disk: q = Psi eta.
+  /// The bladed disk: physical or modal coordinates (disk_part.hpp).
+  std::unique_ptr<DiskPart> m_disk;
   bool m_modal_disk = false;
-  Eigen::MatrixXd m_psi;          ///< Psi, r x r, M^-orthonormal
-  Eigen::VectorXd m_lambda_disk;  ///< Lambda = diag(Psi^T K^ Psi)
-  std::vector<int> m_boundary;    ///< positions of the boundary (tip) entries in q (modal disk)
-  std::vector<int> m_tip_position; ///< positions of the boundary (tip) entries in q
-  Eigen::MatrixXd m_psi_boundary; ///< Psi_B: the rows of Psi at m_boundary
-  std::vector<int> m_boundary_index; ///< q position -> index in m_boundary (-1: not a tip's)
-  Eigen::MatrixXd m_boundary_flexibility; ///< Psi_B Psi_B^T
-  Eigen::VectorXd m_eta, m_eta_prev, m_eta_next, m_deta, m_q_boundary, m_dq_boundary;
-  // Modal casing (casing_basis): c = Phi p.
-  bool m_modal_casing = false;
-  Eigen::MatrixXd m_phi;             ///< Phi, n_c x m
-  Eigen::MatrixXd m_phi_scaled_t;    ///< diag(1/a) Phi^T, m x n_c: the correction's columns
-  Eigen::VectorXd m_omega_squared;   ///< omega_i^2
-  Eigen::VectorXd m_modal_gamma;     ///< gamma_i = alpha + beta omega_i^2
-  Eigen::VectorXd m_modal_a_inverse; ///< 1 / a_i
-  Eigen::VectorXd m_force_modal;     ///< Phi^T F
-  Eigen::VectorXd m_p, m_p_prev, m_p_next, m_dp;
-  std::vector<std::pair<int, double>> m_casing_terms; ///< (casing dof, f) of the step's correction
+  /// The casing: full sparse or modal (casing_part.hpp).
+  std::unique_ptr<CasingPart> m_casing;
+  /// The contact solve of the friction law (tip_contact_solve.hpp).
+  std::unique_ptr<TipContactSolve> m_solve;
   double m_dt;
   double m_mu;
   const ReducedTipContact& m_contact;
   FrictionLaw m_law;
-  CoulombGaussSeidel m_coulomb; ///< used under the coulomb law only
 
   int m_n = 0;
-  Eigen::VectorXd m_force;  ///< held casing force F [N]
-  bool m_force_zero = true; ///< F == 0 exactly: skipped in the step
-  Eigen::VectorXd m_q, m_q_prev, m_c, m_c_prev;
-  Eigen::VectorXd m_q_next, m_c_next, m_dq, m_dc;
-  Eigen::VectorXd
-      m_casing_work;      ///< the casing solve in the factor's ordering, then c_{n+1} - c_{n-1}
-  Eigen::VectorXd m_kc_c; ///< K_c c_n (work)
-  Eigen::VectorXd m_c_delta, m_c_damping; ///< damped casing: c difference, C_c times it (work)
-  Eigen::VectorXd m_gap, m_lambda;
-  Eigen::VectorXd m_lambda_t; ///< tangential multipliers, one per tip
-  bool m_lambda_t_zero = true;
-  // Coulomb law: states, certificate and work storage.
-  std::vector<ReducedContactState> m_state, m_state_before;
-  ReducedCoulombCertificate m_certificate;
-  Eigen::VectorXd m_warm; ///< (lambda_n, lambda_t) per tip, the next solve's start
-  Eigen::MatrixXd m_w;    ///< W over the solved tips, 2 m square
-  Eigen::VectorXd m_rows; ///< [g~; s~] over the solved tips
-  Eigen::VectorXd m_rows_lambda, m_rows_y;
-  std::vector<TipContact> m_predicted_kept; ///< Coulomb: the predicted tips of a closing step
+  Eigen::VectorXd m_gap;
   std::vector<TipContact> m_tips;           ///< tips at the current state
   std::vector<TipContact> m_predicted;      ///< tips at the predicted state of the step
-  // Work storage of solve_contact, kept between steps.
-  std::vector<char> m_active;
-  std::vector<char> m_known;
-  std::vector<int> m_set;
-  Eigen::MatrixXd m_w_all, m_wa;
-  Eigen::VectorXd m_minus_gap, m_la, m_residual;
-  Eigen::PartialPivLU<Eigen::MatrixXd> m_lu;
   double m_initial_energy = 0.0;
   double m_external_work = 0.0;
   double m_contact_work = 0.0;

@@ -12,6 +12,7 @@
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
 #include "reduced_contact.hpp"
+#include "reduced_drive.hpp"
 #include "reduced_integrator.hpp"
 #include "reduction.hpp"
 #include "run_step.hpp"
@@ -25,6 +26,91 @@ ReducedBasis reduce_selected(const Case& c, const BladedDisk& bd, const std::str
   return reduce_bladed_disk(bd, method, modes, parse_mode_selection(selection),
                             selection_context(bd, c.forcing.nodal_diameter));
 }
+
+/// The paper case's monitor: the casing force held between the changes of
+/// its schedule, the history rows and the blow-up tests of RunMonitor (the
+/// reference run's bookkeeping), and the recovered field u = T q on the rows.
+class BladedDiskMonitor final : public DriveMonitor {
+public:
+  /// Every argument must outlive the monitor (not owned).
+  BladedDiskMonitor(ReducedIntegrator& integrator, RunMonitor& monitor,
+                    const ForcingSchedule& schedule, const Eigen::VectorXd& forcing, bool coulomb,
+                    const Eigen::MatrixXd& transformation, const ReducedRunOptions& options,
+                    std::vector<Eigen::VectorXd>& field)
+      : m_integrator(integrator)
+      , m_monitor(monitor)
+      , m_schedule(schedule)
+      , m_forcing(forcing)
+      , m_coulomb(coulomb)
+      , m_transformation(transformation)
+      , m_options(options)
+      , m_field(field)
+      , m_share(schedule.share(0))
+      , m_tips([this](Eigen::VectorXd& out) { m_integrator.tip_displacement(out); })
+      , m_u(transformation.rows()) {}
+
+  /// The casing force at `share` of the forcing.
+  Eigen::VectorXd force_of(double share) const {
+    return share == 1.0 ? m_forcing : Eigen::VectorXd(share * m_forcing);
+  }
+
+  void started() override {
+    m_monitor.start(state(), m_integrator.initial_energy());
+    record_field();
+  }
+
+  void before_step(std::int64_t n) override {
+    if (m_schedule.share(n) != m_share) { // held until it changes
+      m_share = m_schedule.share(n);
+      m_integrator.set_force(force_of(m_share));
+    }
+  }
+
+  bool after_step(std::int64_t /*n_next*/, const StepReport& r) override {
+    const int rows = m_monitor.n_rows();
+    const bool go_on = m_monitor.after_step(r, state(), [this]() { return m_integrator.energy(); });
+    if (m_monitor.n_rows() > rows) record_field();
+    return go_on;
+  }
+
+private:
+  StepState state() const {
+    // The tangential multipliers (one a tip) go to history.csv with the
+    // Coulomb law only, as in the reference run: sliding_sign histories keep
+    // their columns.
+    return StepState{m_integrator.step_index(),
+                     m_integrator.time(),
+                     m_integrator.gap(),
+                     m_integrator.lambda(),
+                     m_integrator.external_work(),
+                     m_integrator.contact_work(),
+                     m_integrator.casing(),
+                     m_integrator.damping_work(),
+                     m_coulomb ? &m_integrator.tangential_lambda() : nullptr,
+                     &m_tips};
+  }
+
+  void record_field() {
+    if (!m_options.full_field) return;
+    m_u.noalias() = m_transformation * m_integrator.q();
+    if (m_options.field_sink)
+      m_options.field_sink(m_integrator.time(), m_u);
+    else
+      m_field.push_back(m_u);
+  }
+
+  ReducedIntegrator& m_integrator;
+  RunMonitor& m_monitor;
+  const ForcingSchedule& m_schedule;
+  const Eigen::VectorXd& m_forcing;
+  bool m_coulomb;
+  const Eigen::MatrixXd& m_transformation;
+  const ReducedRunOptions& m_options;
+  std::vector<Eigen::VectorXd>& m_field;
+  double m_share;
+  TipDisplacementSource m_tips;
+  Eigen::VectorXd m_u;
+};
 
 } // namespace
 
@@ -125,57 +211,15 @@ ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
   s.flops_per_step = integrator.flops_per_step();
   s.casing_flops_per_step = integrator.casing_flops_per_step();
   const ForcingSchedule schedule(c.forcing, case_in.time, step.k);
-  auto force_of = [&](double share) -> Eigen::VectorXd {
-    return share == 1.0 ? forcing : Eigen::VectorXd(share * forcing);
-  };
-
   RunMonitor monitor(c, casing, options.run, result);
   std::vector<Eigen::VectorXd> field;
-  const bool coulomb = c.operating_point.friction_law == FrictionLaw::coulomb;
-  const TipDisplacementSource tips = [&](Eigen::VectorXd& out) {
-    integrator.tip_displacement(out);
-  };
-  auto state = [&]() {
-    // The tangential multipliers (one a tip) go to history.csv with the
-    // Coulomb law only, as in the reference run: sliding_sign histories keep
-    // their columns.
-    return StepState{integrator.step_index(),
-                     integrator.time(),
-                     integrator.gap(),
-                     integrator.lambda(),
-                     integrator.external_work(),
-                     integrator.contact_work(),
-                     integrator.casing(),
-                     integrator.damping_work(),
-                     coulomb ? &integrator.tangential_lambda() : nullptr,
-                     &tips};
-  };
   const Eigen::Index n_physical = basis.transformation.rows();
-  Eigen::VectorXd u(n_physical);
-  auto record_field = [&]() {
-    if (!options.full_field) return;
-    u.noalias() = basis.transformation * integrator.q();
-    if (options.field_sink)
-      options.field_sink(integrator.time(), u);
-    else
-      field.push_back(u);
-  };
+  BladedDiskMonitor bladed_disk_monitor(integrator, monitor, schedule, forcing,
+                                        c.operating_point.friction_law == FrictionLaw::coulomb,
+                                        basis.transformation, options, field);
   const Clock::time_point integration_start = Clock::now();
-  double share = schedule.share(0);
-  integrator.start(force_of(share));
-  monitor.start(state(), integrator.initial_energy());
-  record_field();
-  for (int n = 0; n < s.steps_requested; ++n) {
-    if (schedule.share(n) != share) { // held until it changes
-      share = schedule.share(n);
-      integrator.set_force(force_of(share));
-    }
-    const StepReport r = integrator.step();
-    const int rows = monitor.n_rows();
-    const bool go_on = monitor.after_step(r, state(), [&]() { return integrator.energy(); });
-    if (monitor.n_rows() > rows) record_field();
-    if (!go_on) break;
-  }
+  integrator.set_force(bladed_disk_monitor.force_of(schedule.share(0)));
+  drive_reduced(integrator, s.steps_requested, bladed_disk_monitor);
   monitor.finish(seconds_since(integration_start), seconds_since(start));
   // The caller's copy of the basis, made after the clock stops: bookkeeping,
   // not the run (5 MB for the 72-element CB-88 basis).

@@ -1,6 +1,7 @@
 #pragma once
 // A contact run of the reduced bladed disk (CB, CCM or Guyan) with the full
-// casing (SPEC §3): same outputs as the reference run.
+// casing (SPEC §3): same outputs as the reference run, stepped by the
+// reduced time loop (reduced_drive.hpp).
 
 #include <functional>
 #include <string>
