@@ -86,11 +86,7 @@ void write_component(const std::string& dir, const std::string& shown, const Com
 
 int ExportCommand::run(StagedOutput& output) {
   const ExportOptions& options = m_options;
-  std::vector<Component> components;
-  ComponentInput first = load_component_input(options.case_path, "", options.load);
-  const bool paper = !first.component_case.has_value();
-  components.push_back(std::move(first.component));
-  if (paper) components.push_back(load_component_input(options.case_path, "casing", options.load).component);
+  const std::vector<Component> components = load_case_structures(options.case_path, options.load);
   const std::string dir = output.open(options.out, "--out", export_output_set());
   for (const Component& c : components)
     output.make(dir + "/" + c.name);

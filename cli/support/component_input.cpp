@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 #include <sys/resource.h>
@@ -34,6 +35,16 @@ ComponentInput load_component_input(const std::string& case_path, const std::str
   ComponentInput input_of_part = paper_part_input(parse_case(document, case_path), part);
   input_of_part.case_source = case_path;
   return input_of_part;
+}
+
+std::vector<Component> load_case_structures(const std::string& case_path,
+                                            const ComponentLoadOptions& load) {
+  ComponentInput first = load_component_input(case_path, "", load);
+  const bool paper = !first.component_case.has_value();
+  std::vector<Component> structures;
+  structures.push_back(std::move(first.component));
+  if (paper) structures.push_back(load_component_input(case_path, "casing", load).component);
+  return structures;
 }
 
 ComponentInput paper_part_input(const Case& c, const std::string& part) {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -29,6 +30,12 @@ struct ComponentInput {
 /// ImportError (exit 2).
 ComponentInput load_component_input(const std::string& case_path, const std::string& part,
                                     const ComponentLoadOptions& load);
+
+/// Every structure of the case, in the order of its problem (problem.hpp):
+/// the paper's bladed disk and casing, or the component. Throws as
+/// load_component_input.
+std::vector<Component> load_case_structures(const std::string& case_path,
+                                            const ComponentLoadOptions& load);
 
 /// The bladed disk ("bladed-disk" or empty) or the casing of the paper's case.
 ComponentInput paper_part_input(const Case& c, const std::string& part);

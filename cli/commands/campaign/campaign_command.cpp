@@ -16,6 +16,7 @@
 
 #include "campaign_options.hpp"
 #include "campaign_progress.hpp"
+#include "case_kinds.hpp"
 #include "casing.hpp"
 #include "casing_memory.hpp"
 #include "central_difference.hpp"
@@ -44,7 +45,10 @@ public:
   int run(StagedOutput& output) override;
 
 private:
-  int campaign_paper_case(const Case& c, StagedOutput& output) const;
+  int campaign(const Case& c, StagedOutput& output) const;
+  int campaign(const ComponentCase& c, StagedOutput& output) const {
+    return campaign_component_case(m_options, c, output);
+  }
 
   CampaignOptions m_options;
 };
@@ -118,18 +122,11 @@ GapErrors series_gap_errors(ScratchSeries& reduced, ScratchSeries& reference) {
 } // namespace
 
 int CampaignCommand::run(StagedOutput& output) {
-  const CampaignOptions& options = m_options;
-  const nlohmann::json document = read_case_document(options.case_path);
-  if (is_component_case(document))
-    return campaign_component_case(options, parse_component_case(document, options.case_path),
-                                   output);
-  if (!options.load.source_override.empty())
-    throw UsageError("--source: only for a component case; " + options.case_path +
-                     " is the paper's case");
-  return campaign_paper_case(parse_case(document, options.case_path), output);
+  return visit_case(m_options.case_path, m_options.load,
+                    [&](const auto& c) { return campaign(c, output); });
 }
 
-int CampaignCommand::campaign_paper_case(const Case& c, StagedOutput& output) const {
+int CampaignCommand::campaign(const Case& c, StagedOutput& output) const {
   const CampaignOptions& options = m_options;
   if (c.campaign.empty())
     throw UsageError(c.source + ": key 'campaign': missing or empty, nothing to run");

@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include "case_json.hpp"
+#include "case_kinds.hpp"
 #include "command.hpp"
 #include "command_options.hpp"
 #include "component_case.hpp"
@@ -45,7 +46,9 @@ private:
   /// and guyan check theirs when the basis is built).
   void check_option_rules() const;
   /// The paper's case: the reference or a reduced run.
-  int simulate_paper_case(const Case& c, StagedOutput& output) const;
+  int simulate(const Case& c, StagedOutput& output) const;
+  /// A component case: its rubbing run (component_simulation.cpp).
+  int simulate(const ComponentCase& c, StagedOutput& output) const;
 
   SimulateOptions m_options;
   CLI::Option* m_modes = nullptr;
@@ -145,25 +148,22 @@ void append_field_csv_row(std::string& out, double t, const Eigen::VectorXd& u) 
 
 int SimulateCommand::run(StagedOutput& output) {
   check_option_rules();
-  const SimulateOptions& options = m_options;
-  const nlohmann::json document = read_case_document(options.case_path);
-  if (is_component_case(document)) {
-    // A component run takes its step from its rubbing object (each run at
-    // its own step already) and has no casing to reduce.
-    if (options.time_step != "case" || options.casing_modes != 0 || options.selection != "lowest")
-      throw UsageError("--time-step, --casing-modes, --selection: only for the paper's case; a "
-                       "component case sets its steps in its rubbing object and keeps the lowest "
-                       "modes");
-    return simulate_component_case(options, parse_component_case(document, options.case_path),
-                                   output);
-  }
-  if (!options.load.source_override.empty())
-    throw UsageError("--source: only for a component case; " + options.case_path +
-                     " is the paper's case");
-  return simulate_paper_case(parse_case(document, options.case_path), output);
+  return visit_case(m_options.case_path, m_options.load,
+                    [&](const auto& c) { return simulate(c, output); });
 }
 
-int SimulateCommand::simulate_paper_case(const Case& c, StagedOutput& output) const {
+int SimulateCommand::simulate(const ComponentCase& c, StagedOutput& output) const {
+  const SimulateOptions& options = m_options;
+  // A component run takes its step from its rubbing object (each run at
+  // its own step already) and has no casing to reduce.
+  if (options.time_step != "case" || options.casing_modes != 0 || options.selection != "lowest")
+    throw UsageError("--time-step, --casing-modes, --selection: only for the paper's case; a "
+                     "component case sets its steps in its rubbing object and keeps the lowest "
+                     "modes");
+  return simulate_component_case(options, c, output);
+}
+
+int SimulateCommand::simulate(const Case& c, StagedOutput& output) const {
   const SimulateOptions& options = m_options;
   const bool full = options.method == "full";
   if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")

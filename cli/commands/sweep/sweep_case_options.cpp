@@ -16,7 +16,11 @@
 
 namespace rsi {
 
-std::unique_ptr<SweepPoints> paper_case_sweep(Case c, const SweepOptions& options, int jobs) {
+std::unique_ptr<SweepPoints> case_sweep(const Case& given, const SweepOptions& options, int jobs) {
+  if (options.method == "macneal")
+    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
+                     "component cases), got 'macneal'");
+  Case c = given;
   if (!c.sweep.present())
     throw UsageError(c.source + ": key 'sweep': missing; a sweep needs its duration, transient, "
                                 "damping and runs (data/README.md)");
@@ -60,8 +64,8 @@ std::unique_ptr<SweepPoints> paper_case_sweep(Case c, const SweepOptions& option
   return paper_sweep_points(std::move(c), disk_dofs, refused_step);
 }
 
-std::unique_ptr<SweepPoints> component_case_sweep(const ComponentCase& c,
-                                                  const SweepOptions& options) {
+std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptions& options,
+                                        int /*jobs*/) {
   for (const std::string& name : options.paper_run_options)
     throw UsageError(name + ": only for the paper's case (a component's runs step at "
                             "rubbing.step_safety of their own limit, on the whole casing); drop it");

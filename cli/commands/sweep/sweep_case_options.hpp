@@ -16,10 +16,11 @@
 namespace rsi {
 
 /// The paper's case; `jobs`: the runs a process holds at once (memory checks).
-std::unique_ptr<SweepPoints> paper_case_sweep(Case c, const SweepOptions& options, int jobs);
+std::unique_ptr<SweepPoints> case_sweep(const Case& c, const SweepOptions& options, int jobs);
 
-/// A component case with its "rubbing" object.
-std::unique_ptr<SweepPoints> component_case_sweep(const ComponentCase& c,
-                                                  const SweepOptions& options);
+/// A component case with its "rubbing" object (one run at a time a thread:
+/// `jobs` sets no memory check).
+std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptions& options,
+                                        int jobs);
 
 } // namespace rsi

@@ -2,7 +2,7 @@
 // reduced to a row of indicators, alone on --jobs threads or over MPI ranks
 // (cli/support/mpi_session.hpp). The kind of case (the paper's bladed disk in its
 // flexible casing, or a component rubbing on its rigid casing) is read
-// once, where the case is loaded (sweep_points_of): from there on the
+// once, where the case is loaded (case_kinds.hpp): from there on the
 // command and the driver (sweep/sweep_driver.hpp) see only its SweepPoints.
 // Rows are written in (speed, run) order and a row depends only on its
 // (speed, run): one process, threads or ranks give the same sweep.csv.
@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "case_kinds.hpp"
 #include "command.hpp"
 #include "command_options.hpp"
 
@@ -151,19 +152,10 @@ private:
   MpiSession& m_mpi;
 };
 
-/// The case's sweep, checked: the one place that reads which kind of case
-/// it is.
+/// The case's sweep, checked (case_kinds.hpp reads which kind of case it is).
 std::unique_ptr<SweepPoints> sweep_points_of(const SweepOptions& options, int jobs) {
-  const nlohmann::json document = read_case_document(options.case_path);
-  if (is_component_case(document))
-    return component_case_sweep(parse_component_case(document, options.case_path), options);
-  if (!options.load.source_override.empty())
-    throw UsageError("--source: only for a component case; " + options.case_path +
-                     " is the paper's case");
-  if (options.method == "macneal")
-    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
-                     "component cases), got 'macneal'");
-  return paper_case_sweep(parse_case(document, options.case_path), options, jobs);
+  return visit_case(options.case_path, options.load,
+                    [&](const auto& c) { return case_sweep(c, options, jobs); });
 }
 
 double median(std::vector<double> x) {
