@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "casing.hpp"
+#include "failure_advice.hpp"
 #include "interruption_flag.hpp"
 #include "critical_step.hpp"
 #include "interaction_lines.hpp"
@@ -133,7 +134,7 @@ public:
       out.error = m_refused_step(r.run, e);
     } catch (const std::exception& e) {
       out.row = csv_row(speed, r.run, "failed", nullptr);
-      out.error = e.what();
+      out.error = failure_message(e);
     }
     return out;
   }

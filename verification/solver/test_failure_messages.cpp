@@ -7,6 +7,7 @@
 // failure during a run) and what to change.
 // Release time: 0.2 s for the whole executable (AddressSanitizer: 0.8 s).
 
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -48,6 +49,21 @@ template <class Error, class Run> std::string message_of(const Run& run) {
   return "";
 }
 
+/// The remedies the exception `run` throws carries (the CLI words them:
+/// cli/support/failure_advice.hpp), empty if none is thrown.
+template <class Error, class Run> std::vector<Remedy> remedies_of(const Run& run) {
+  try {
+    run();
+  } catch (const Error& e) {
+    return advice_of(e).remedies;
+  }
+  return {};
+}
+
+bool has(const std::vector<Remedy>& remedies, Remedy r) {
+  return std::find(remedies.begin(), remedies.end(), r) != remedies.end();
+}
+
 // ---- the reduced integrator (simulate --method cb|ccm|guyan, campaign) ----
 
 TEST(ReducedIntegratorFailure, ReducedMassNotPositiveDefiniteSaysWhatToChange) {
@@ -62,10 +78,11 @@ TEST(ReducedIntegratorFailure, ReducedMassNotPositiveDefiniteSaysWhatToChange) {
   ReducedBasis basis = reduce_bladed_disk(assemble_bladed_disk(c), "cb", 10);
   basis.mass(0, 0) = -basis.mass(0, 0);
   const ReducedTipContact contact(basis, casing, c);
-  const std::string what = message_of<ReducedIntegrationError>(
-      [&] { ReducedIntegrator integrator(basis, casing, c.time.step, contact); });
+  const auto build = [&] { ReducedIntegrator integrator(basis, casing, c.time.step, contact); };
+  const std::string what = message_of<ReducedIntegrationError>(build);
   EXPECT_TRUE(contains(what, "the reduced mass matrix is not positive definite")) << what;
-  EXPECT_TRUE(contains(what, "keep fewer modes (--modes")) << what;
+  EXPECT_TRUE(has(remedies_of<ReducedIntegrationError>(build),
+                  Remedy::fewer_modes_campaign_or_another_method));
 }
 
 /// The default case's CB-10 integrator at step `dt`, started with tip 1
@@ -125,9 +142,11 @@ TEST(ReducedIntegratorFailure, FailedReducedEigenproblemSaysWhatToChange) {
   const Case c = default_case();
   ReducedBasis basis = reduce_bladed_disk(assemble_bladed_disk(c), "cb", 10);
   basis.mass(0, 0) = std::numeric_limits<double>::quiet_NaN();
-  const std::string what = message_of<ReducedIntegrationError>([&] { reduced_omega_max(basis); });
+  const auto omega_max = [&] { reduced_omega_max(basis); };
+  const std::string what = message_of<ReducedIntegrationError>(omega_max);
   EXPECT_TRUE(contains(what, "the generalized eigenproblem (K^, M^) failed")) << what;
-  EXPECT_TRUE(contains(what, "keep fewer modes (--modes)")) << what;
+  EXPECT_TRUE(has(remedies_of<ReducedIntegrationError>(omega_max),
+                  Remedy::fewer_modes_or_another_method));
 }
 
 // ---- the reference integrator (simulate --method full, campaign, sweep) ----
