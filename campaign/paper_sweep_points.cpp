@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "casing.hpp"
-#include "failure_advice.hpp"
-#include "interruption_flag.hpp"
 #include "critical_step.hpp"
+#include "failure_advice.hpp"
 #include "interaction_lines.hpp"
+#include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"

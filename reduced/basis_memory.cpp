@@ -22,8 +22,8 @@ void check_dense_basis_fits(const FailureAdvice& where, int n_dofs, int n_bounda
   const double fitting_columns = std::floor(limit / (16.0 * n_dofs * runs));
   std::ostringstream what;
   what.precision(3);
-  what << modes << " modes: the reduced basis T is dense, " << n_dofs << " x "
-       << n_boundary + modes << " (" << n_boundary
+  what << modes << " modes: the reduced basis T is dense, " << n_dofs << " x " << n_boundary + modes
+       << " (" << n_boundary
        << " boundary dofs and the modes), and a reduced run holds it twice, 16 n r = "
        << dense_basis_bytes(n_dofs, n_boundary + modes) / 1e9 << " GB";
   if (runs > 1) what << ", " << runs << " runs at once: " << needed / 1e9 << " GB";

@@ -60,8 +60,8 @@ Eigen::VectorXd reduced_eigenvalues(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
       problem.stiffness, problem.mass, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
-                                  kBasisRemedy, kBasisAdvice);
+    throw ReducedIntegrationError(
+        "reduced model: the generalized eigenproblem (K^, M^) failed" + kBasisRemedy, kBasisAdvice);
   return eigen.eigenvalues();
 }
 
@@ -80,8 +80,8 @@ ReducedModes reduced_modes(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness,
                                                                         basis.mass);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
-                                  kBasisRemedy, kBasisAdvice);
+    throw ReducedIntegrationError(
+        "reduced model: the generalized eigenproblem (K^, M^) failed" + kBasisRemedy, kBasisAdvice);
   return {eigen.eigenvectors(), eigen.eigenvalues()};
 }
 

@@ -124,11 +124,10 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
   }
   check_dense_casing_fits(c, casing.n_dofs(), options.runs_at_once);
   const BladedDisk bd = assemble_bladed_disk(c);
-  check_dense_basis_fits(options.modes_key.empty()
-                             ? failed_input(FailedInput::mode_count, c.source + ": ")
-                             : shown_after(c.source + ": " + options.modes_key + ": "),
-                         bd.n_dofs(),
-                         static_cast<int>(bd.boundary.size()), modes, options.runs_at_once);
+  check_dense_basis_fits(
+      options.modes_key.empty() ? failed_input(FailedInput::mode_count, c.source + ": ")
+                                : shown_after(c.source + ": " + options.modes_key + ": "),
+      bd.n_dofs(), static_cast<int>(bd.boundary.size()), modes, options.runs_at_once);
   return run_reduced(c, reduce_selected(c, bd, method, modes, options.selection), options);
 }
 

@@ -1,5 +1,7 @@
 #include "failure_advice.hpp"
 
+#include <sstream>
+
 namespace rsi {
 namespace {
 
@@ -14,6 +16,8 @@ const char* input_name(FailedInput input) {
     return "--method";
   case FailedInput::casing_mode_count:
     return "casing_modes";
+  case FailedInput::time_step_value:
+    return "time.step";
   }
   return "";
 }
@@ -37,6 +41,14 @@ const char* remedy_words(Remedy remedy) {
     return "; ask for fewer modes (--count, --modes) or make the model coarser (fewer elements)";
   case Remedy::fewer_modes_or_report:
     return "; ask for fewer modes (--count, --modes), or report the model";
+  case Remedy::smaller_step_or_force:
+    return "; use a smaller step or --force";
+  case Remedy::reduced_smaller_step:
+    return "; use a smaller step (time.step, or --time-step and the campaign's time_step of a "
+           "reduced run)";
+  case Remedy::reduced_friction_or_smaller_step:
+    return "; change operating_point.friction_coefficient (friction that cancels the contacts' "
+           "normal flexibility) or use a smaller step (time.step, --time-step)";
   }
   return "";
 }
@@ -45,7 +57,9 @@ const char* remedy_words(Remedy remedy) {
 
 std::string with_advice(const std::string& what, const FailureAdvice& advice) {
   std::string out = advice.context;
-  if (advice.input != FailedInput::unnamed) out += std::string(input_name(advice.input)) + ": ";
+  if (advice.input != FailedInput::unnamed)
+    out += std::string(input_name(advice.input)) +
+           (advice.input == FailedInput::time_step_value ? " = " : ": ");
   out += what;
   for (const Remedy r : advice.remedies)
     out += remedy_words(r);
@@ -54,6 +68,34 @@ std::string with_advice(const std::string& what, const FailureAdvice& advice) {
 
 std::string failure_message(const std::exception& e) {
   return with_advice(e.what(), advice_of(e));
+}
+
+std::string without_force(const std::string& what, const std::string& remedy) {
+  const std::string force = " or --force";
+  const size_t at = what.rfind(force);
+  if (at == std::string::npos || at + force.size() != what.size()) return what;
+  return what.substr(0, at) + " (" + remedy + ")";
+}
+
+StabilityError without_force(const StabilityError& e, const std::string& remedy) {
+  return StabilityError(without_force(failure_message(e), remedy));
+}
+
+std::string stopped_run_remedy(const RunSummary& s) {
+  std::ostringstream remedy;
+  remedy.precision(6);
+  if (s.dt >= s.critical_dt) {
+    remedy << "the step " << s.dt
+           << " s is at or above the stability limit 2/omega_max = " << s.critical_dt
+           << " s (run with --force): use a smaller step (time.step, --time-step) and drop --force";
+  } else {
+    // Below the limit the scheme is stable (SPEC §2): the energy came in
+    // through the contact, as friction on blades leaning into the rotation.
+    remedy << "at a stable step the energy came in through the contact (friction wedges blades "
+              "leaning into the rotation: sprag): change "
+              "operating_point.friction_coefficient or the sign of bladed_disk.kink_angle_deg";
+  }
+  return remedy.str();
 }
 
 } // namespace rsi

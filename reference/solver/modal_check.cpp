@@ -321,8 +321,8 @@ bool check_modes(const Eigen::SparseMatrix<double>& stiffness,
 
 void require_passed(const Modes& modes, const std::string& what) {
   if (modes.accuracy.passed) return;
-  throw ModalCheckError("modal analysis: " + what + " returned modes that fail their check: " +
-                            modes.accuracy.failure,
+  throw ModalCheckError("modal analysis: " + what +
+                            " returned modes that fail their check: " + modes.accuracy.failure,
                         remedied_by({Remedy::fewer_modes_or_report}));
 }
 
