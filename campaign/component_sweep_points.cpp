@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "failure_advice.hpp"
 #include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
 #include "reduction.hpp"
@@ -132,7 +133,7 @@ public:
       throw; // out of memory ends the sweep, not one speed
     } catch (const std::exception& e) {
       out.row = failed_row(speed, run);
-      out.error = e.what();
+      out.error = failure_message(e);
     }
     return out;
   }
@@ -235,7 +236,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
         r.basis = reduce(model.component.stiffness, model.component.mass, model.component.boundary,
                          r.run.method, r.run.modes);
       } catch (const ReductionError& e) {
-        throw ReductionError(where + run_name_of(r.run) + ": " + e.what());
+        throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
       }
       r.basis_seconds = seconds_since(t);
       r.coordinates = r.basis->n_reduced();

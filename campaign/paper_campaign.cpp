@@ -6,6 +6,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "failure_advice.hpp"
 #include "reduced_run.hpp"
 #include "run_monitor.hpp"
 #include "worker_threads.hpp"
@@ -73,11 +74,11 @@ void run_paper_campaign(const Case& c, std::vector<PaperCampaignJob>& jobs, int 
         // The reference's step is bad input (exit 2, as for simulate): no
         // campaign without its reference. A reduced run's own limit fails that run.
         if (i == 0) throw;
-        r.error = e.what();
+        r.error = failure_message(e);
         r.step_refused = true;
       } catch (const std::exception& e) {
         if (sink_failed) throw; // a failed write (exit 2 naming the file): the disk, not the run
-        r.error = e.what();
+        r.error = failure_message(e);
       }
       hooks.finished(i, r);
     }

@@ -6,9 +6,10 @@
 #include <stdexcept>
 
 #include "casing.hpp"
-#include "interruption_flag.hpp"
 #include "critical_step.hpp"
+#include "failure_advice.hpp"
 #include "interaction_lines.hpp"
+#include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
 #include "reduced_run.hpp"
 #include "reference_run.hpp"
@@ -133,7 +134,7 @@ public:
       out.error = m_refused_step(r.run, e);
     } catch (const std::exception& e) {
       out.row = csv_row(speed, r.run, "failed", nullptr);
-      out.error = e.what();
+      out.error = failure_message(e);
     }
     return out;
   }

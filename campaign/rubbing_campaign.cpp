@@ -1,5 +1,7 @@
 #include "rubbing_campaign.hpp"
 
+#include "failure_advice.hpp"
+
 #include <algorithm>
 
 namespace rsi {
@@ -36,7 +38,7 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
   try {
     entry.run = run_rubbing(model, o, keep);
   } catch (const ReductionError& e) {
-    entry.error = e.what();
+    entry.error = failure_message(e);
     return false;
   }
   if (!entry.run.summary.completed) entry.error = entry.run.summary.status;

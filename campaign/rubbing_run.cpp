@@ -16,6 +16,7 @@
 
 #include "component_integrator.hpp"
 #include "component_run.hpp"
+#include "failure_advice.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
 #include "reduction.hpp"
@@ -254,7 +255,7 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
   } catch (const ModalError& e) {
     // A consistent mass may be singular (Rotor 37's C3D15): the reduced
     // methods still run on it, the full-order explicit run cannot.
-    throw ModalError("the full-order run of " + model.component.name + ": " + e.what() +
+    throw ModalError("the full-order run of " + model.component.name + ": " + failure_message(e) +
                      "; or run a reduced --method (cb, ccm, macneal)");
   }
   const double sample_dt = 2.0 * M_PI / std::abs(omega) / setup.steps_per_revolution;

@@ -33,7 +33,7 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
                                            : "[0, " + std::to_string(most) + "] for " + r.method +
                                                  " (dofs minus boundary dofs)"));
     // Its dense basis, as many at once as threads build them (basis_memory.hpp).
-    check_dense_basis_fits(where + ": " + r.name(), bd.n_dofs(),
+    check_dense_basis_fits(shown_after(where + ": " + r.name() + ": "), bd.n_dofs(),
                            static_cast<int>(bd.boundary.size()), r.modes, runs_at_once);
   }
   return bd.n_dofs();

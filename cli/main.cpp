@@ -17,6 +17,7 @@
 #include <gsl/gsl_errno.h>
 
 #include "command.hpp"
+#include "failure_advice.hpp"
 #include "failure_kinds.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
@@ -43,7 +44,7 @@ std::string required_allowed(const CLI::App& app, const std::string& message) {
 /// Messages name the paths the user gave, never the staging folder.
 int run_command(rsi::Command& command, rsi::StagedOutput& output) {
   auto failure = [&output](const char* kind, const std::exception& e, int status) {
-    std::fprintf(stderr, "rsi: %s: %s\n", kind, output.shown(e.what()).c_str());
+    std::fprintf(stderr, "rsi: %s: %s\n", kind, output.shown(rsi::failure_message(e)).c_str());
     return status;
   };
   try {

@@ -12,16 +12,18 @@
 
 #include <string>
 
+#include "failure_kinds.hpp"
+
 namespace rsi {
 
 /// 16 n r: T (n x r) and its copy.
 double dense_basis_bytes(int n_dofs, int n_reduced);
 
-/// Throws CaseError, naming `where` (the case file and the key or option
-/// the mode count came from), the bytes and the most modes that fit, when
+/// Throws CaseError, shown after `where` (the case file and the input the
+/// mode count came from), with the bytes and the most modes that fit, when
 /// `runs_at_once` bases of `n_boundary + modes` columns over `n_dofs` dofs
 /// exceed process_memory_limit_bytes() (casing_memory.hpp).
-void check_dense_basis_fits(const std::string& where, int n_dofs, int n_boundary, int modes,
+void check_dense_basis_fits(const FailureAdvice& where, int n_dofs, int n_boundary, int modes,
                             int runs_at_once);
 
 } // namespace rsi

@@ -78,7 +78,8 @@ CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd
       const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(k_small, m_small);
       if (ritz.info() != Eigen::Success)
         throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction "
-                         "failed; keep fewer casing modes (--casing-modes, casing_modes)");
+                         "failed",
+                         remedied_by({Remedy::fewer_casing_modes}));
       basis.shapes = v * ritz.eigenvectors();
       basis.omega_squared = ritz.eigenvalues();
       basis.static_correction = true;

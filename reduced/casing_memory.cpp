@@ -38,9 +38,11 @@ void check_dense_casing_fits(const Case& c, int n_casing_dofs, int runs_at_once)
   if (runs_at_once > 1) what << ", " << runs_at_once << " runs at once: " << needed / 1e9 << " GB";
   what << ", more than the " << limit / 1e9
        << " GB this process may use (physical memory, ulimit -v, ulimit -d); use at most " << most
-       << " casing elements" << (runs_at_once > 1 ? " or fewer --jobs" : "")
-       << " (simulate --method full keeps no dense casing matrix)";
-  throw CaseError(what.str());
+       << " casing elements";
+  FailureAdvice advice;
+  if (runs_at_once > 1) advice.remedies.push_back(Remedy::fewer_jobs);
+  advice.remedies.push_back(Remedy::full_method_no_dense_casing);
+  throw CaseError(what.str(), advice);
 }
 
 } // namespace rsi

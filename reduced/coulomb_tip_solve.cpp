@@ -60,8 +60,9 @@ void CoulombTipSolve::solve(const std::vector<TipContact>& tips, int step, StepR
   for (int k = 0; k < nt; ++k) {
     if (!std::isfinite(tips[k].gap) || !std::isfinite(tips[k].slip))
       throw ReducedIntegrationError("reduced integrator: non-finite predicted gap or slip of tip " +
-                                    std::to_string(k + 1) + " at step " + std::to_string(step) +
-                                    " (the state blew up)" + step_remedy());
+                                        std::to_string(k + 1) + " at step " + std::to_string(step) +
+                                        " (the state blew up)",
+                                    step_remedy());
     if (tips[k].gap < 0.0) m_active[k] = 1, ++n_active;
   }
   if (n_active > 0) {
@@ -84,7 +85,7 @@ void CoulombTipSolve::solve(const std::vector<TipContact>& tips, int step, StepR
       const CoulombGaussSeidelReport solved = m_coulomb.solve(m_w, m_rows, m_rows_lambda);
       if (!solved.converged())
         throw ReducedIntegrationError("reduced integrator: Coulomb contact problem at step " +
-                                      std::to_string(step) + ": " + solved.message +
+                                          std::to_string(step) + ": " + solved.message,
                                       contact_remedy());
       for (int a = 0; a < m; ++a)
         m_warm.segment<2>(2 * m_set[a]) = m_rows_lambda.segment<2>(2 * a);
@@ -102,7 +103,8 @@ void CoulombTipSolve::solve(const std::vector<TipContact>& tips, int step, StepR
       if (round >= nt)
         throw ReducedIntegrationError(
             "reduced integrator: the set of closing tips did not settle at step " +
-            std::to_string(step) + step_remedy());
+                std::to_string(step),
+            step_remedy());
     }
     m_predicted_kept = tips;
     const std::vector<ReducedContactState>& states = m_coulomb.states();

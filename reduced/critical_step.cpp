@@ -15,9 +15,8 @@ namespace rsi {
 namespace {
 
 /// What to change when (K^, M^) has no eigenpairs (issue 13, class 8).
-const std::string kBasisRemedy =
-    " (M^ = T^T M T not positive definite, or not finite); keep fewer modes (--modes) or use "
-    "another --method";
+const std::string kBasisRemedy = " (M^ = T^T M T not positive definite, or not finite)";
+const FailureAdvice kBasisAdvice = remedied_by({Remedy::fewer_modes_or_another_method});
 
 /// (K^, M^) or, with a massless boundary, the condensed pair on the massed coordinates.
 struct FiniteProblem {
@@ -46,8 +45,8 @@ FiniteProblem finite_problem(const ReducedBasis& basis) {
   const Eigen::LLT<Eigen::MatrixXd> k_bb(block(basis.stiffness, boundary, boundary));
   if (k_bb.info() != Eigen::Success)
     throw ReducedIntegrationError("reduced model: the stiffness K^_BB of the massless boundary is "
-                                  "not positive definite (static condensation failed); use a "
-                                  "method with a massed boundary (--method cb or ccm)");
+                                  "not positive definite (static condensation failed)",
+                                  remedied_by({Remedy::massed_boundary_method}));
   const Eigen::MatrixXd k_br = block(basis.stiffness, boundary, massed);
   const Eigen::MatrixXd condensed =
       block(basis.stiffness, massed, massed) - k_br.transpose() * k_bb.solve(k_br);
@@ -61,8 +60,8 @@ Eigen::VectorXd reduced_eigenvalues(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
       problem.stiffness, problem.mass, Eigen::EigenvaluesOnly);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
-                                  kBasisRemedy);
+    throw ReducedIntegrationError(
+        "reduced model: the generalized eigenproblem (K^, M^) failed" + kBasisRemedy, kBasisAdvice);
   return eigen.eigenvalues();
 }
 
@@ -81,8 +80,8 @@ ReducedModes reduced_modes(const ReducedBasis& basis) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eigen(basis.stiffness,
                                                                         basis.mass);
   if (eigen.info() != Eigen::Success)
-    throw ReducedIntegrationError("reduced model: the generalized eigenproblem (K^, M^) failed" +
-                                  kBasisRemedy);
+    throw ReducedIntegrationError(
+        "reduced model: the generalized eigenproblem (K^, M^) failed" + kBasisRemedy, kBasisAdvice);
   return {eigen.eigenvectors(), eigen.eigenvalues()};
 }
 

@@ -12,8 +12,9 @@ namespace {
 // T^T M T for a basis T of full rank: a mass that fails here is a basis
 // that lost its rank in rounding.
 const std::string kReducedMassRemedy =
-    "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: "
-    "keep fewer modes (--modes, or the campaign's modes) or use another --method";
+    "; the case's M passed its check when it loaded, so the basis T lost its rank in rounding: ";
+const FailureAdvice kReducedMassAdvice =
+    remedied_by({Remedy::fewer_modes_campaign_or_another_method});
 
 } // namespace
 
@@ -25,8 +26,9 @@ DiskPart::DiskPart(const ReducedBasis& basis, double dt, const Eigen::MatrixXd& 
     , m_damped(damped) {
   if (m_factor.info() != Eigen::Success)
     throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
-                                  (m_damped ? " plus dt/2 C^" : "") +
-                                  " is not positive definite" + kReducedMassRemedy);
+                                      (m_damped ? " plus dt/2 C^" : "") +
+                                      " is not positive definite" + kReducedMassRemedy,
+                                  kReducedMassAdvice);
   m_flexibility = m_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_tip_position = basis.boundary_position;
   m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
@@ -49,7 +51,8 @@ void DiskPart::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
     if (mass.info() != Eigen::Success)
       throw ReducedIntegrationError(
           "reduced integrator: the reduced mass matrix is not positive definite" +
-          kReducedMassRemedy);
+              kReducedMassRemedy,
+          kReducedMassAdvice);
     m_q_prev = m_q - 0.5 * m_dt * m_dt * mass.solve(m_kq * m_q);
   }
 }

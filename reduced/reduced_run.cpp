@@ -124,8 +124,10 @@ ReducedRunResult run_reduced(const Case& c, const std::string& method, int modes
   }
   check_dense_casing_fits(c, casing.n_dofs(), options.runs_at_once);
   const BladedDisk bd = assemble_bladed_disk(c);
-  check_dense_basis_fits(c.source + ": " + options.modes_key, bd.n_dofs(),
-                         static_cast<int>(bd.boundary.size()), modes, options.runs_at_once);
+  check_dense_basis_fits(
+      options.modes_key.empty() ? failed_input(FailedInput::mode_count, c.source + ": ")
+                                : shown_after(c.source + ": " + options.modes_key + ": "),
+      bd.n_dofs(), static_cast<int>(bd.boundary.size()), modes, options.runs_at_once);
   return run_reduced(c, reduce_selected(c, bd, method, modes, options.selection), options);
 }
 
@@ -137,19 +139,21 @@ ReducedBasis build_reduced_basis(const Case& c, const std::string& method, int m
 ReducedRunResult run_reduced(const Case& case_in, const ReducedBasis& basis,
                              const ReducedRunOptions& options) {
   if (basis.massless_boundary)
-    throw ReductionError(
-        "--method: " + basis.method +
-        " has a massless boundary, which needs a static boundary balance at "
-        "every step (SPEC §8); the reduced integrator inverts M^ and cannot run it");
+    throw ReductionError(basis.method +
+                             " has a massless boundary, which needs a static boundary balance at "
+                             "every step (SPEC §8); the reduced integrator inverts M^ and cannot "
+                             "run it",
+                         failed_input(FailedInput::method));
   ReducedRunResult out;
   {
     // The casing basis is a basis like the bladed disk's: built before the
     // run's clock starts, its time counted in basis_seconds.
     const Casing casing = assemble_casing(case_in);
     if (options.casing_modes < 0 || options.casing_modes > casing.n_dofs())
-      throw ReductionError("casing_modes: must be in [0, " + std::to_string(casing.n_dofs()) +
-                           "] (0: the full casing; at most its dofs), got " +
-                           std::to_string(options.casing_modes));
+      throw ReductionError("must be in [0, " + std::to_string(casing.n_dofs()) +
+                               "] (0: the full casing; at most its dofs), got " +
+                               std::to_string(options.casing_modes),
+                           failed_input(FailedInput::casing_mode_count));
     if (options.casing_modes != 0)
       out.casing_basis = reduce_casing(casing, options.casing_modes,
                                        casing_forcing(casing, case_in.forcing));

@@ -34,8 +34,10 @@ struct ReducedRunOptions {
   StepRule step;
   /// Where a bad step is reported (CaseError's key).
   std::string step_key = "time_step";
-  /// Where the mode count came from, for a basis too large for the memory.
-  std::string modes_key = "--modes";
+  /// Where the mode count came from, for a basis too large for the memory:
+  /// empty when the caller's own mode count (FailedInput::mode_count), else
+  /// shown as it is (a campaign's run list entry).
+  std::string modes_key;
   /// 0: the full casing; N_c >= 1: the casing in its lowest N_c modes plus
   /// the static correction for the forcing (casing_basis.hpp).
   int casing_modes = 0;

@@ -83,8 +83,9 @@ void SlidingSignSolve::solve(const std::vector<TipContact>& tips, int step,
     m_residual -= m_minus_gap;
     if (!m_la.allFinite() || m_residual.norm() > 1e-8 * m_minus_gap.norm())
       throw ReducedIntegrationError("reduced integrator: singular contact matrix W at step " +
-                                    std::to_string(step) + " (" + std::to_string(m) +
-                                    " active tips)" + contact_remedy());
+                                        std::to_string(step) + " (" + std::to_string(m) +
+                                        " active tips)",
+                                    contact_remedy());
     bool changed = false;
     for (int a = 0; a < m; ++a)
       if (m_la(a) < 0.0) m_active[m_set[a]] = 0, changed = true; // drop every negative multiplier
@@ -101,7 +102,8 @@ void SlidingSignSolve::solve(const std::vector<TipContact>& tips, int step,
     if (!changed) return;
   }
   throw ReducedIntegrationError("reduced integrator: the active set did not settle at step " +
-                                std::to_string(step) + step_remedy());
+                                    std::to_string(step),
+                                step_remedy());
 }
 
 void SlidingSignSolve::gather_correction(const std::vector<TipContact>& tips, DiskPart& disk,

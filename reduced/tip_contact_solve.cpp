@@ -16,18 +16,12 @@ void TipContactSolve::start(int n_tips) {
   m_certificate = ReducedCoulombCertificate{};
 }
 
-const std::string& TipContactSolve::step_remedy() {
-  static const std::string remedy =
-      "; use a smaller step (time.step, or --time-step and the campaign's time_step of a reduced "
-      "run)";
-  return remedy;
+FailureAdvice TipContactSolve::step_remedy() {
+  return remedied_by({Remedy::reduced_smaller_step});
 }
 
-const std::string& TipContactSolve::contact_remedy() {
-  static const std::string remedy =
-      "; change operating_point.friction_coefficient (friction that cancels the contacts' normal "
-      "flexibility) or use a smaller step (time.step, --time-step)";
-  return remedy;
+FailureAdvice TipContactSolve::contact_remedy() {
+  return remedied_by({Remedy::reduced_friction_or_smaller_step});
 }
 
 } // namespace rsi

@@ -18,6 +18,7 @@
 
 #include "casing_part.hpp"
 #include "disk_part.hpp"
+#include "failure_kinds.hpp"
 #include "history.hpp"
 #include "reduced_contact.hpp"
 #include "reduced_coulomb_certificate.hpp"
@@ -69,8 +70,8 @@ protected:
   /// The parts must outlive the solve (not owned).
   TipContactSolve(const DiskPart& disk, const CasingPart& casing, double dt, double mu);
   /// What to change, for the messages of ReducedIntegrationError.
-  static const std::string& step_remedy();
-  static const std::string& contact_remedy();
+  static FailureAdvice step_remedy();
+  static FailureAdvice contact_remedy();
 
   const DiskPart& m_disk;
   const CasingPart& m_casing;

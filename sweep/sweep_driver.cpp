@@ -11,6 +11,7 @@
 #include <system_error>
 #include <thread>
 
+#include "failure_advice.hpp"
 #include "sweep_schedule.hpp"
 #include "worker_threads.hpp"
 
@@ -71,7 +72,7 @@ SweepOutcome drive_sweep(const SweepPoints& points, const SweepRanks& ranks,
     try {
       run_on_threads(threads_n, worker, failed);
     } catch (const std::exception& e) {
-      error = e.what();
+      error = failure_message(e);
     } catch (...) {
       error = "a worker thread failed";
     }

@@ -10,8 +10,10 @@ namespace rsi {
 
 void check_fixed_interface_count(const Partition& p, int eta) {
   if (eta < 0 || eta > p.n_interior())
-    throw ReductionError("--modes: Craig-Bampton takes 0 to " + std::to_string(p.n_interior()) +
-                         " fixed-interface modes (the interior dofs), got " + std::to_string(eta));
+    throw ReductionError("Craig-Bampton takes 0 to " + std::to_string(p.n_interior()) +
+                             " fixed-interface modes (the interior dofs), got " +
+                             std::to_string(eta),
+                         failed_input(FailedInput::mode_count));
 }
 
 FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiffness,

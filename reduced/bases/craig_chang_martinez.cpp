@@ -181,9 +181,10 @@ residual_flexibility_transformation(const Eigen::SparseMatrix<double>& stiffness
 void check_free_interface_count(const Partition& p, int psi) {
   const int available = p.n() - p.n_boundary();
   if (psi < 0 || psi > available)
-    throw ReductionError("--modes: Craig-Chang-Martinez takes 0 to " + std::to_string(available) +
-                         " free-interface modes (dofs minus boundary dofs), got " +
-                         std::to_string(psi));
+    throw ReductionError("Craig-Chang-Martinez takes 0 to " + std::to_string(available) +
+                             " free-interface modes (dofs minus boundary dofs), got " +
+                             std::to_string(psi),
+                         failed_input(FailedInput::mode_count));
 }
 
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,

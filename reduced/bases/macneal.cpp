@@ -15,10 +15,11 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
   const int n = p.n();
   const int nb = p.n_boundary();
   if (psi < 1 || psi > n - nb)
-    throw ReductionError("--modes: MacNeal takes 1 to " + std::to_string(n - nb) +
-                         " free-interface modes (dofs minus boundary dofs; the boundary is "
-                         "massless), got " +
-                         std::to_string(psi));
+    throw ReductionError("MacNeal takes 1 to " + std::to_string(n - nb) +
+                             " free-interface modes (dofs minus boundary dofs; the boundary is "
+                             "massless), got " +
+                             std::to_string(psi),
+                         failed_input(FailedInput::mode_count));
   const auto start = std::chrono::steady_clock::now();
   ReducedBasis basis;
   basis.method = "macneal";

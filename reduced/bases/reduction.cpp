@@ -20,11 +20,12 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
   if (method == "macneal") return macneal(stiffness, mass, p, modes);
   if (method == "guyan") {
     if (modes != 0)
-      throw ReductionError("--modes: Guyan reduction keeps no modes (0), got " +
-                           std::to_string(modes));
+      throw ReductionError("Guyan reduction keeps no modes (0), got " + std::to_string(modes),
+                           failed_input(FailedInput::mode_count));
     return guyan(stiffness, mass, p);
   }
-  throw ReductionError("--method: must be full, cb, ccm, guyan or macneal, got '" + method + "'");
+  throw ReductionError("must be full, cb, ccm, guyan or macneal, got '" + method + "'",
+                       failed_input(FailedInput::method));
 }
 
 ReducedBasis reduce_bladed_disk(const BladedDisk& bd, const std::string& method, int modes) {

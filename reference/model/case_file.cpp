@@ -136,7 +136,7 @@ void check_blade_shape(const BladedDiskSpec& spec, const std::string& source) {
     g = blade_geometry(spec);
   } catch (const CaseError& e) {
     // blade_geometry names the keys; the loader's messages start with the file.
-    throw CaseError(source + ": " + e.what());
+    throw CaseError(e.what(), in_context(e.advice(), source + ": "));
   }
   for (size_t i = 2; i < g.nodes.size(); ++i)
     if (!(g.nodes[i].norm() > g.nodes[i - 1].norm())) {

@@ -41,8 +41,7 @@ const std::string kOmegaMaxRemedy =
 const std::string kStiffnessRemedy =
     "; support the part against rigid motions (a clamped boundary in component.source) or make "
     "it less slender (thicker sections, fewer elements)";
-const std::string kSolverRemedy =
-    "; ask for fewer modes (--count, --modes) or make the model coarser (fewer elements)";
+const FailureAdvice kSolverAdvice = remedied_by({Remedy::fewer_modes_or_coarser_model});
 
 /// K phi = lambda M phi by LAPACKE dsygvd on (K, M): false if M is not
 /// positive definite (its Cholesky factorization fails), the caller then
@@ -60,8 +59,8 @@ bool dense_direct(const Eigen::SparseMatrix<double>& stiffness,
     throw std::bad_alloc();
   if (info > n) return false;
   if (info != 0)
-    throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")" +
-                     kSolverRemedy);
+    throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")",
+                     kSolverAdvice);
   modes.omega_squared = w.head(count);
   modes.shapes = a.leftCols(count);
   modes.omega_max = std::sqrt(std::max(w(n - 1), 0.0));
@@ -118,8 +117,8 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
   if (info == LAPACK_WORK_MEMORY_ERROR || info == LAPACK_TRANSPOSE_MEMORY_ERROR)
     throw std::bad_alloc();
   if (info != 0 && info <= n)
-    throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")" +
-                     kSolverRemedy);
+    throw ModalError("modal analysis: LAPACKE_dsygvd failed (info " + std::to_string(info) + ")",
+                     kSolverAdvice);
   Eigen::MatrixXd null_directions;
   const bool failed_cholesky =
       info > n; // A not positive definite: shared null directions, or K indefinite
@@ -130,8 +129,8 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
     const lapack_int e = LAPACKE_dsyevd(LAPACK_COL_MAJOR, 'V', 'L', n, v.data(), n, w.data());
     if (e == LAPACK_WORK_MEMORY_ERROR || e == LAPACK_TRANSPOSE_MEMORY_ERROR) throw std::bad_alloc();
     if (e != 0)
-      throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(e) + ")" +
-                       kSolverRemedy);
+      throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(e) + ")",
+                       kSolverAdvice);
     const double tolerance = resolution * std::max(std::abs(w(0)), std::abs(w(n - 1)));
     int z = 0;
     while (z < n && w(z) <= tolerance)
@@ -160,8 +159,8 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
       if (f == LAPACK_WORK_MEMORY_ERROR || f == LAPACK_TRANSPOSE_MEMORY_ERROR)
         throw std::bad_alloc();
       if (f != 0)
-        throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(f) + ")" +
-                         kSolverRemedy);
+        throw ModalError("modal analysis: LAPACKE_dsyevd failed (info " + std::to_string(f) + ")",
+                         kSolverAdvice);
       x = q * c;
     }
   }
@@ -271,8 +270,8 @@ private:
     const Eigen::Map<const Eigen::VectorXd> b(x, rows());
     Eigen::Map<Eigen::VectorXd> z(y, rows());
     if (!m_factor.solve(system, b, z))
-      throw ModalError("modal analysis: the CHOLMOD solve with the mass factor failed" +
-                       kSolverRemedy);
+      throw ModalError("modal analysis: the CHOLMOD solve with the mass factor failed",
+                       kSolverAdvice);
   }
   CholmodFactor m_factor;
 };
@@ -307,8 +306,8 @@ double sparse_largest_eigenvalue(const Eigen::SparseMatrix<double>& stiffness,
     if (ncv >= n) break;
   }
   throw ModalError("modal analysis: Lanczos for omega_max did not converge (30 vectors and 1000 "
-                   "restarts, then 128 and 10000)" +
-                   kSolverRemedy);
+                   "restarts, then 128 and 10000)",
+                   kSolverAdvice);
 }
 
 /// The block method's parameters for `count` modes (measured on Rotor 37,
@@ -359,8 +358,8 @@ SparseOutcome block_modes(const Eigen::SparseMatrix<double>& stiffness,
   case Status::not_converged:
     return SparseOutcome::not_converged;
   case Status::failed:
-    throw ModalError("modal analysis: block shift-invert failed (" + result.message + ")" +
-                     kSolverRemedy);
+    throw ModalError("modal analysis: block shift-invert failed (" + result.message + ")",
+                     kSolverAdvice);
   }
   modes.omega_squared = result.eigenvalues;
   modes.shapes = result.eigenvectors;
@@ -440,7 +439,8 @@ bool lanczos_modes(ShiftInvert& op, const Eigen::SparseMatrix<double>& scaled_ma
     solver.compute(Spectra::SortRule::LargestMagn, 10000, 1e-12);
     if (solver.info() != Spectra::CompInfo::Successful)
       throw ModalError("modal analysis: shift-invert Lanczos did not converge for the lowest " +
-                       std::to_string(count) + " modes" + kSolverRemedy);
+                           std::to_string(count) + " modes",
+                       kSolverAdvice);
     values = solver.eigenvalues();
     vectors = solver.eigenvectors();
   } catch (const std::invalid_argument&) { // Spectra's SymShiftInvert: factorization failed

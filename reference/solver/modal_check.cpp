@@ -321,9 +321,9 @@ bool check_modes(const Eigen::SparseMatrix<double>& stiffness,
 
 void require_passed(const Modes& modes, const std::string& what) {
   if (modes.accuracy.passed) return;
-  throw ModalCheckError("modal analysis: " + what + " returned modes that fail their check: " +
-                        modes.accuracy.failure +
-                        "; ask for fewer modes (--count, --modes), or report the model");
+  throw ModalCheckError("modal analysis: " + what +
+                            " returned modes that fail their check: " + modes.accuracy.failure,
+                        remedied_by({Remedy::fewer_modes_or_report}));
 }
 
 } // namespace rsi

@@ -11,6 +11,17 @@
 #include <stdexcept>
 
 namespace rsi {
+namespace {
+
+/// A step at or above the limit: the case's step, unless forced.
+FailureAdvice step_advice() {
+  FailureAdvice advice = failed_input(FailedInput::time_step_value);
+  advice.remedies.push_back(Remedy::smaller_step_or_force);
+  return advice;
+}
+const FailureAdvice kStepAdvice = step_advice();
+
+} // namespace
 
 void check_time_step(double dt, double omega_max, bool force, RunSummary& s) {
   s.dt = dt;
@@ -19,11 +30,9 @@ void check_time_step(double dt, double omega_max, bool force, RunSummary& s) {
   if (dt >= s.critical_dt && !force) {
     std::ostringstream message;
     message.precision(6);
-    message << "time.step = " << dt
-            << " s is not below the central-difference stability limit 2/omega_max = "
-            << s.critical_dt << " s (omega_max = " << omega_max
-            << " rad/s); use a smaller step or --force";
-    throw StabilityError(message.str());
+    message << dt << " s is not below the central-difference stability limit 2/omega_max = "
+            << s.critical_dt << " s (omega_max = " << omega_max << " rad/s)";
+    throw StabilityError(message.str(), kStepAdvice);
   }
 }
 
@@ -36,13 +45,11 @@ void check_time_step_bound(double dt, const Eigen::SparseMatrix<double>& stiffne
   if (!(dt >= bound)) return;
   std::ostringstream message;
   message.precision(6);
-  message << "time.step = " << dt
-          << " s is not below the central-difference stability limit of the " << part
+  message << dt << " s is not below the central-difference stability limit of the " << part
           << ": 2/omega_max <= " << bound
           << " s (a Rayleigh quotient x^T K x / x^T M x bounds omega_max^2 from below: "
-          << largest.iterations
-          << " power steps, found before the eigensolver); use a smaller step or --force";
-  throw StabilityError(message.str());
+          << largest.iterations << " power steps, found before the eigensolver)";
+  throw StabilityError(message.str(), kStepAdvice);
 }
 
 RunMonitor::RunMonitor(const Case& c, const Casing& casing, const RunOptions& options,

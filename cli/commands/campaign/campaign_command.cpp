@@ -22,7 +22,7 @@
 #include "central_difference.hpp"
 #include "command.hpp"
 #include "command_options.hpp"
-#include "failure_remedies.hpp"
+#include "failure_advice.hpp"
 #include "interruption.hpp"
 #include "modes_table.hpp"
 #include "output_files.hpp"

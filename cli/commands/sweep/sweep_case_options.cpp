@@ -7,7 +7,7 @@
 #include "casing_memory.hpp"
 #include "command_options.hpp"
 #include "component_sweep_points.hpp"
-#include "failure_remedies.hpp"
+#include "failure_advice.hpp"
 #include "paper_sweep_points.hpp"
 #include "run_list_checks.hpp"
 #include "run_monitor.hpp"
@@ -54,7 +54,7 @@ std::unique_ptr<SweepPoints> case_sweep(const Case& given, const SweepOptions& o
   // key or option that set the step.
   const RefusedStepMessage refused_step = [](const CampaignRun& run, const StabilityError& e) {
     return without_force(
-        std::string(e.what()),
+        failure_message(e),
         run.step.kind == StepRule::Kind::given
             ? "a smaller time_step of run " + sweep_run_name(run) +
                   " (sweep.runs or --time-step), dividing the output interval, or \"own\"; a "
