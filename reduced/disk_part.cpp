@@ -21,15 +21,15 @@ const FailureAdvice kReducedMassAdvice =
 DiskPart::DiskPart(const ReducedBasis& basis, double dt, const Eigen::MatrixXd& a, bool damped)
     : m_kq(basis.stiffness)
     , m_mq(basis.mass)
-    , m_factor(a)
+    , m_factor(std::in_place, a)
     , m_dt(dt)
     , m_damped(damped) {
-  if (m_factor.info() != Eigen::Success)
+  if (m_factor->info() != Eigen::Success)
     throw ReducedIntegrationError(std::string("reduced integrator: the reduced mass matrix") +
                                       (m_damped ? " plus dt/2 C^" : "") +
                                       " is not positive definite" + kReducedMassRemedy,
                                   kReducedMassAdvice);
-  m_flexibility = m_factor.solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
+  m_flexibility = m_factor->solve(Eigen::MatrixXd::Identity(m_mq.rows(), m_mq.cols()));
   m_tip_position = basis.boundary_position;
   m_q_next = m_dq = Eigen::VectorXd::Zero(m_kq.rows());
 }

@@ -13,6 +13,7 @@
 // (flexibility()). The contact reads q at the tips' entries only, and
 // those are kept in q_{n-1}, q_n, q_{n+1} by both parts.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Cholesky>
@@ -74,7 +75,9 @@ protected:
 
   Eigen::MatrixXd m_kq;
   Eigen::MatrixXd m_mq;
-  Eigen::LLT<Eigen::MatrixXd> m_factor; ///< of A, released by the derived part once used
+  /// Of A, released (reset) by the derived part once used: an optional, as
+  /// assigning a default-constructed LLT would copy its uninitialized members.
+  std::optional<Eigen::LLT<Eigen::MatrixXd>> m_factor;
   Eigen::MatrixXd m_flexibility; ///< A^-1 = (M^ + dt/2 C^)^-1 (M^-1 undamped)
   double m_dt;
   bool m_damped;

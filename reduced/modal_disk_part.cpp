@@ -7,7 +7,7 @@ namespace rsi {
 
 ModalDiskPart::ModalDiskPart(const ReducedBasis& basis, double dt, const ReducedModes& modes)
     : DiskPart(basis, dt, basis.mass, false) {
-  m_factor = Eigen::LLT<Eigen::MatrixXd>();
+  m_factor.reset();
   const Eigen::Index r = m_kq.rows();
   if (modes.shapes.rows() != r || modes.shapes.cols() != r || modes.omega_squared.size() != r)
     throw std::invalid_argument("ReducedIntegrator: the reduced modes must be " +

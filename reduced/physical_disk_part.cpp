@@ -24,8 +24,8 @@ PhysicalDiskPart::PhysicalDiskPart(const ReducedBasis& basis, double dt, bool da
     m_cq_matrix = full;
   else if (m_damped)
     m_cq = diagonal;
-  m_aq = m_factor.solve(m_kq);
-  m_factor = Eigen::LLT<Eigen::MatrixXd>();
+  m_aq = m_factor->solve(m_kq);
+  m_factor.reset();
   if (m_damped)
     m_bq = m_cq_matrix.size() != 0 ? Eigen::MatrixXd(dt * (m_flexibility * m_cq_matrix))
                                    : Eigen::MatrixXd(dt * (m_flexibility * m_cq.asDiagonal()));
