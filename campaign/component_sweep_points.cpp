@@ -54,8 +54,8 @@ std::vector<double> natural_frequencies(const RubbingModel& model, const Prepare
         hz.push_back(std::sqrt(std::max(0.0, e.eigenvalues()(i))) / (2.0 * M_PI));
   } else {
     try {
-      const Modes modes = lowest_modes(model.component.stiffness, model.component.mass,
-                                       std::min(blade_frequencies, model.component.n_dofs() - 1));
+      const Modes modes = lowest_modes(model.component().stiffness, model.component().mass,
+                                       std::min(blade_frequencies, model.component().n_dofs() - 1));
       for (int i = 0; i < modes.n_modes(); ++i)
         hz.push_back(modes.frequency_hz(i));
     } catch (const ModalError&) {
@@ -82,7 +82,7 @@ public:
   /// Samples x coordinates: the steps a sample (more as Omega falls, for
   /// the mass-carrying runs) are left out of this weight.
   double cost(double, int run) const override {
-    return m_sweep.revolutions * m_model.setup.steps_per_revolution *
+    return m_sweep.revolutions * m_model.setup().steps_per_revolution *
            m_runs[static_cast<size_t>(run)].coordinates;
   }
 
@@ -93,16 +93,16 @@ public:
 
   SweepTaskResult run(double speed, int run, bool inject_failure) const override {
     const PreparedRun& r = m_runs[static_cast<size_t>(run)];
-    const RubbingSetup& setup = m_model.setup;
+    const RubbingSetup& setup = m_model.setup();
     const double period = 2.0 * M_PI / std::abs(speed);
     const double interval = period / setup.steps_per_revolution * setup.output_every;
     // The casing law of this speed, for g0_c(t) (the runs build their own).
     const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
                                           : ImposedGap::constant(setup.gap);
-    const RigidSurfaceContact casing(rigid_surface_nodes(m_model.component, m_model.contact_nodes),
+    const RigidSurfaceContact casing(rigid_surface_nodes(m_model.component(), m_model.contact_nodes()),
                                      gap, speed, setup.friction_coefficient,
                                      setup.sliding_against_rotation ? -speed : speed,
-                                     m_model.component.rotation_axis);
+                                     m_model.component().rotation_axis);
     RubbingIndicatorAccumulator indicators(casing, m_sweep.transient_revolutions * period,
                                            interval);
     RubbingRunOptions options;
@@ -144,7 +144,7 @@ public:
 
   std::vector<std::pair<std::string, std::string>> side_files() const override {
     std::string lines = "run,mode,blade_hz,engine_order,casing_harmonic,speed_rad_s\n";
-    const bool oval = m_model.setup.oval_gap;
+    const bool oval = m_model.setup().oval_gap;
     const double sign = m_sweep.speeds.front() > 0.0 ? 1.0 : -1.0;
     for (const PreparedRun& r : m_runs)
       for (size_t k = 0; k < r.frequencies_hz.size(); ++k)
@@ -159,22 +159,22 @@ public:
   }
 
   nlohmann::json summary() const override {
-    const RubbingSetup& setup = m_model.setup;
+    const RubbingSetup& setup = m_model.setup();
     nlohmann::json s;
     s["case_kind"] = "component";
-    s["component"] = m_model.component.name;
-    s["units"] = m_model.component_case.units;
+    s["component"] = m_model.component().name;
+    s["units"] = m_model.component_case().units;
     s["revolutions"] = m_sweep.revolutions;
     s["transient_revolutions"] = m_sweep.transient_revolutions;
     s["steps_per_revolution"] = setup.steps_per_revolution;
     s["output_every"] = setup.output_every;
-    s["contact_nodes"] = m_model.contact_nodes.size();
-    s["response"] = m_model.response_name;
+    s["contact_nodes"] = m_model.contact_nodes().size();
+    s["response"] = m_model.response_name();
     s["gap"] = setup.oval_gap ? "oval, 2 lobes" : "constant";
     s["tip_sliding"] = setup.sliding_against_rotation ? "against_rotation" : "with_rotation";
     s["friction_coefficient"] = setup.friction_coefficient;
-    s["modal_ratio"] = m_model.component_case.damping.modal_ratio;
-    s["window"] = "Hann (periodic), t >= transient, the response dof " + m_model.response_name +
+    s["modal_ratio"] = m_model.component_case().damping.modal_ratio;
+    s["window"] = "Hann (periodic), t >= transient, the response dof " + m_model.response_name() +
                   ", mean removed; resolution 1/(rows x output interval)";
     return s;
   }
@@ -229,11 +229,11 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
   for (size_t j = 0; j < runs.size(); ++j) {
     PreparedRun& r = runs[j];
     r.run = sweep.runs[j];
-    r.coordinates = model.component.n_dofs();
+    r.coordinates = model.component().n_dofs();
     if (r.run.method != "full") {
       const Clock::time_point t = Clock::now();
       try {
-        r.basis = reduce(model.component.stiffness, model.component.mass, model.component.boundary,
+        r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
                          r.run.method, r.run.modes);
       } catch (const ReductionError& e) {
         throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));

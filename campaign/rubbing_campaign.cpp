@@ -31,7 +31,7 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
   RubbingRunOptions o;
   o.method = entry.method;
   o.modes = entry.modes;
-  o.revolutions = entry.method == "full" ? model.setup.full_revolutions : model.setup.revolutions;
+  o.revolutions = entry.method == "full" ? model.setup().full_revolutions : model.setup().revolutions;
   if (entry.method == "full") o.revolutions_key = "rubbing.campaign.full_revolutions";
   o.checkpoint = checkpoint;
   o.progress = progress;

@@ -16,12 +16,12 @@
 
 #include "component_integrator.hpp"
 #include "component_run.hpp"
+#include "full_order_run.hpp"
 #include "failure_advice.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
 #include "reduction.hpp"
 #include "rigid_casing.hpp"
-#include "rigid_surface_contact.hpp"
 #include "rubbing_points.hpp"
 
 namespace rsi {
@@ -48,13 +48,13 @@ std::string count_text(double x) {
 RunCounts checked_counts(const RubbingModel& model, const RubbingRunOptions& options,
                          std::int64_t samples, double sample_dt, double critical_dt,
                          const std::string& method) {
-  const RubbingSetup& setup = model.setup;
-  const double k = std::max(1.0, std::ceil(sample_dt / (setup.step_safety * critical_dt)));
+  const RubbingSetup& setup = model.setup();
+  const double k = model.problem.steps.steps_per_sample(sample_dt, critical_dt);
   const double steps = static_cast<double>(samples) * k;
   if (!(steps <= static_cast<double>(max_rubbing_steps))) {
     std::ostringstream m;
     m.precision(6);
-    m << model.component_case.case_path << ": keys '" << options.revolutions_key
+    m << model.component_case().case_path << ": keys '" << options.revolutions_key
       << "' and 'rubbing.steps_per_revolution': " << samples << " samples x " << count_text(k)
       << " steps a sample (the " << method << " run steps at T/(k N) <= rubbing.step_safety "
       << setup.step_safety << " x its stability limit " << critical_dt << " s, T/N = " << sample_dt
@@ -74,23 +74,23 @@ RunCounts checked_counts(const RubbingModel& model, const RubbingRunOptions& opt
 /// CaseError naming the keys.
 std::int64_t checked_samples(const RubbingModel& model, const RubbingRunOptions& options,
                              double revolutions) {
-  const RubbingSetup& setup = model.setup;
+  const RubbingSetup& setup = model.setup();
   // revolutions <= 1e5, steps_per_revolution <= 1e8 (the case's ranges):
   // at most 1e13 samples, exact in a double and an int64.
-  const double samples = std::max(1.0, std::round(revolutions * setup.steps_per_revolution));
+  const double samples = model.problem.steps.samples(revolutions);
   if (!(samples <= static_cast<double>(max_rubbing_steps)))
-    throw CaseError(model.component_case.case_path + ": keys '" + options.revolutions_key +
+    throw CaseError(model.component_case().case_path + ": keys '" + options.revolutions_key +
                     "' and 'rubbing.steps_per_revolution': " + count_text(samples) +
                     " samples, more than the " + std::to_string(max_rubbing_steps) +
                     " steps a run can count");
   // t, the response, per contact gap, lambda_n, lambda_t1, lambda_t2, and
   // E, W_ext, W_contact, W_damp: about 24 bytes each (%.17g and a comma).
-  const double columns = 6.0 + 4.0 * static_cast<double>(model.contact_nodes.size());
+  const double columns = 6.0 + 4.0 * static_cast<double>(model.contact_nodes().size());
   const double bytes = (std::floor(samples / setup.output_every) + 1.0) * columns * 24.0;
   if (bytes > max_rubbing_history_bytes) {
     std::ostringstream m;
     m.precision(4);
-    m << model.component_case.case_path << ": key 'rubbing.output_every': " << count_text(samples)
+    m << model.component_case().case_path << ": key 'rubbing.output_every': " << count_text(samples)
       << " samples (" << options.revolutions_key
       << " x rubbing.steps_per_revolution) written every " << setup.output_every
       << " would make history.csv about " << bytes / 1e9 << " GB (limit "
@@ -162,17 +162,17 @@ RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, i
 
 /// The run's Omega: the option's, else the case's.
 double run_speed(const RubbingModel& model, const RubbingRunOptions& options) {
-  return options.rotation_speed != 0.0 ? options.rotation_speed : model.setup.rotation_speed;
+  return options.rotation_speed != 0.0 ? options.rotation_speed : model.setup().rotation_speed;
 }
 
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
-  const RubbingSetup& setup = model.setup;
+  const RubbingSetup& setup = model.setup();
   const double omega = run_speed(model, options);
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<ReducedBasis> own;
   if (options.basis == nullptr)
-    own = reduce(model.component.stiffness, model.component.mass, model.component.boundary,
+    own = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
                  options.method, options.modes);
   const ReducedBasis& basis = options.basis != nullptr ? *options.basis : *own;
   const auto run_start = std::chrono::steady_clock::now();
@@ -182,13 +182,13 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   gap.g0 = setup.gap;
   gap.width = setup.gap_width;
   const RigidCasing casing =
-      rigid_casing_of(model.component, model.contact_nodes, gap, omega,
+      rigid_casing_of(model.component(), model.contact_nodes(), gap, omega,
                       setup.sliding_against_rotation ? -omega : omega);
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
-  if (model.component_case.damping.modal_ratio > 0.0)
-    o.damping = modal_damping(basis, model.component_case.damping.modal_ratio);
-  const double sample_dt = 2.0 * M_PI / std::abs(omega) / setup.steps_per_revolution;
+  if (model.component_case().damping.modal_ratio > 0.0)
+    o.damping = modal_damping(basis, model.component_case().damping.modal_ratio);
+  const double sample_dt = model.problem.steps.sample_step(omega);
   o.dt = sample_dt;
   o.force_step = true; // a probe, only for omega_max
   const double free_critical_dt = ComponentIntegrator(basis, casing, o).critical_dt();
@@ -228,7 +228,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
     sink(row, sample.response);
   };
   const ComponentRunSummary c =
-      run_component(integrator, basis.transformation.row(model.response_dof), ro, rows);
+      run_component(integrator, basis.transformation.row(model.response_dof()), ro, rows);
   // The run's wall time, as for the bladed disk's reduced runs: from the
   // basis (basis_seconds) to the last step, the rows' output (streamed during
   // the steps, as the full run's) included.
@@ -240,42 +240,39 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
 }
 
 RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
-                            std::int64_t n_samples, const ComponentRowSink& sink) {
-  const RubbingSetup& setup = model.setup;
-  const double omega = run_speed(model, options);
-  const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
-                                        : ImposedGap::constant(setup.gap);
-  const RigidSurfaceContact law(rigid_surface_nodes(model.component, model.contact_nodes), gap,
-                                omega, setup.friction_coefficient,
-                                setup.sliding_against_rotation ? -omega : omega,
-                                model.component.rotation_axis);
-  double omega_max = 0.0;
+                            std::int64_t n_samples, double revolutions,
+                            const ComponentRowSink& sink) {
+  const Component& component = model.component();
+  RunPoint point;
+  point.rotation_speed = run_speed(model, options);
+  point.revolutions = revolutions;
   try {
-    omega_max = max_angular_frequency(model.component.stiffness, model.component.mass);
+    point.omega_max = max_angular_frequency(component.stiffness, component.mass);
   } catch (const ModalError& e) {
     // A consistent mass may be singular (Rotor 37's C3D15): the reduced
     // methods still run on it, the full-order explicit run cannot.
-    throw ModalError("the full-order run of " + model.component.name + ": " + failure_message(e) +
+    throw ModalError("the full-order run of " + component.name + ": " + failure_message(e) +
                      "; or run a reduced --method (cb, ccm, macneal)");
   }
-  const double sample_dt = 2.0 * M_PI / std::abs(omega) / setup.steps_per_revolution;
   RubbingRun run;
-  run.step_limit = 2.0 / omega_max;
-  const RunCounts counts =
-      checked_counts(model, options, n_samples, sample_dt, run.step_limit, "full");
+  run.step_limit = 2.0 / point.omega_max;
+  const RunCounts counts = checked_counts(model, options, n_samples,
+                                          model.problem.steps.sample_step(point.rotation_speed),
+                                          run.step_limit, "full");
   run.steps_per_sample = static_cast<int>(counts.steps_per_sample);
-  ComponentReferenceOptions o;
-  o.dt = sample_dt / run.steps_per_sample;
-  o.steps = counts.steps;
-  o.output_every = counts.steps_per_sample * setup.output_every;
-  o.energy_every = o.output_every;
-  o.damping = model.component_case.damping.rayleigh;
-  o.omega_max = omega_max;
+  RunOptions o;
   o.force = options.force;
   o.checkpoint = options.checkpoint;
   o.progress = options.progress;
-  run.summary = run_component_reference(model.component.stiffness, model.component.mass, law,
-                                        model.response_dof, o, sink);
+  // The response rides in each row as its one tip displacement.
+  o.history_sink = [&sink](const HistoryRow& row) {
+    const double response = (*row.tip_displacement)(0);
+    const HistoryRow out{row.time,          row.gap,           row.lambda,
+                         row.energy,        row.external_work, row.contact_work,
+                         row.damping_work,  row.lambda_tangential};
+    sink(out, response);
+  };
+  run.summary = run_full_order(model.problem, o, point).summary;
   return run;
 }
 
@@ -283,16 +280,7 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
 
 RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptions& load) {
   require_rubbing(c);
-  RubbingModel model;
-  model.component_case = c;
-  model.setup = *c.rubbing;
-  model.component = load_component(c, load);
-  RubbingPoints points = resolve_rubbing_points(c, model.component);
-  model.contact_nodes = std::move(points.contact_nodes);
-  model.response_dof = points.response_dof;
-  model.response_name = std::move(points.response_name);
-  model.period = 2.0 * M_PI / std::abs(model.setup.rotation_speed);
-  return model;
+  return RubbingModel{component_problem(c, load)};
 }
 
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
@@ -301,9 +289,10 @@ RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& optio
       options.method != "guyan" && options.method != "macneal")
     throw std::invalid_argument("--method: must be full, cb, ccm, guyan or macneal, got '" +
                                 options.method + "'");
-  const double revolutions = options.revolutions > 0.0 ? options.revolutions : model.setup.revolutions;
+  const double revolutions = options.revolutions > 0.0 ? options.revolutions : model.setup().revolutions;
   const std::int64_t n_samples = checked_samples(model, options, revolutions);
-  if (options.method == "full") return run_full_rubbing(model, options, n_samples, sink);
+  if (options.method == "full")
+    return run_full_rubbing(model, options, n_samples, revolutions, sink);
   return run_reduced_rubbing(model, options, n_samples, sink);
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// A component case's contact run on the rigid casing (its "rubbing" object,
-// issue 12): the full-order reference (reference/solver/component_reference_run)
-// or a reduced model (reduced/component_integrator), each at its own stable
-// step, sampled at the same times.
+// A component case's contact run on the rigid casing (its "rubbing" object):
+// the full-order reference (the one full-order loop on the case's problem,
+// reference/solver/full_order_run) or a reduced model
+// (reduced/component_integrator), each at its own stable step, sampled at
+// the same times.
 //
 // Time steps. T = 2 pi / Omega, N = steps_per_revolution. Every run
 // integrates at dt = T / (k N), k >= 1 the smallest integer with
@@ -19,32 +20,41 @@
 // balance with u_B^n (component_integrator.hpp). Both are the contact force
 // at t_n to first order in dt.
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "component_case.hpp"
-#include "component_reference_run.hpp"
 #include "history.hpp"
+#include "problem.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
 
+/// A component case with its rubbing set-up, as the one loader describes it
+/// (problem.hpp: component_problem), and the views the runs read.
 struct RubbingModel {
-  ComponentCase component_case;
-  Component component;
-  RubbingSetup setup;
-  std::vector<int> contact_nodes; ///< node ids, the casing's contact order
-  int response_dof = -1;
-  std::string response_name;      ///< "u_NODE_DIR", the history column
-  double period = 0.0;            ///< T = 2 pi / Omega [s]
+  Problem problem; ///< the component kind, with contact (rigid_surface)
+  const ComponentCase& component_case() const { return *problem.component_case; }
+  const RubbingSetup& setup() const { return *problem.component_case->rubbing; }
+  const Component& component() const { return problem.structures.front(); }
+  /// Node ids, the casing's contact order.
+  const std::vector<int>& contact_nodes() const { return problem.contact.contact_nodes; }
+  int response_dof() const { return problem.outputs.response_dof; }
+  /// "u_NODE_DIR", the history column.
+  const std::string& response_name() const { return problem.outputs.response_name; }
+  double period() const { return 2.0 * M_PI / std::abs(setup().rotation_speed); } ///< T [s]
 };
 
 /// The component and its rubbing set-up. Throws CaseError (no "rubbing"
 /// object, a response or contact node that is not in the model) or
 /// ImportError.
 RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptions& load);
+
+/// One history row with the response dof's displacement beside it.
+using ComponentRowSink = std::function<void(const HistoryRow& row, double response)>;
 
 struct RubbingRunOptions {
   std::string method = "full"; ///< full, cb, ccm, guyan, macneal

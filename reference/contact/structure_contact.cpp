@@ -7,8 +7,14 @@
 
 namespace rsi {
 
-StructureContact::StructureContact(const Problem& problem) {
+StructureContact::StructureContact(const Problem& problem)
+    : StructureContact(problem, problem.contact.rotation_speed) {}
+
+StructureContact::StructureContact(const Problem& problem, double rotation_speed) {
   const ProblemContact& c = problem.contact;
+  if (c.kind != ContactKind::rigid_surface && rotation_speed != c.rotation_speed)
+    throw std::invalid_argument(problem.source +
+                                ": only a rigid casing's contact runs at another speed");
   switch (c.kind) {
   case ContactKind::none:
     throw std::invalid_argument(problem.source + ": the problem has no contact to run");
@@ -34,8 +40,8 @@ StructureContact::StructureContact(const Problem& problem) {
                                ? ImposedGap::oval(problem.casing.gap, problem.casing.gap_width)
                                : ImposedGap::constant(problem.casing.gap);
     auto law = std::make_shared<const RigidSurfaceContact>(
-        rigid_surface_nodes(rotor, c.contact_nodes), gap, c.rotation_speed,
-        c.friction_coefficient, c.sliding_speed, rotor.rotation_axis);
+        rigid_surface_nodes(rotor, c.contact_nodes), gap, rotation_speed, c.friction_coefficient,
+        c.sliding_speed_at(rotation_speed), rotor.rotation_axis);
     m_frictional = law.get();
     m_rigid_surface = law.get();
     m_owned = law;

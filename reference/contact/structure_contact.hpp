@@ -27,6 +27,11 @@ public:
   /// a problem without contact (ContactKind::none), and what the law's
   /// constructor throws.
   explicit StructureContact(const Problem& problem);
+  /// The law of `problem.contact` at rotation speed `rotation_speed` in
+  /// place of the case's (the gap's phase and the casing's sliding, with or
+  /// against the rotation as the case says): rigid_surface only (the 2D
+  /// laws read the speed from their case), std::invalid_argument otherwise.
+  StructureContact(const Problem& problem, double rotation_speed);
   /// A law built elsewhere (not owned: it must outlive the handle).
   explicit StructureContact(const ContactLaw& law) : m_law(&law) {}
   explicit StructureContact(const FrictionalContactLaw& law) : m_frictional(&law) {}

@@ -1,5 +1,6 @@
 #include "problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <nlohmann/json.hpp>
@@ -22,6 +23,18 @@ int ProblemContact::n_contacts() const {
 
 long ProblemSteps::fixed_steps() const {
   return rule == Rule::fixed ? std::lround(duration / step) : 0;
+}
+
+double ProblemSteps::samples(double revolutions) const {
+  return std::max(1.0, std::round(revolutions * steps_per_revolution));
+}
+
+double ProblemSteps::sample_step(double omega) const {
+  return 2.0 * M_PI / std::abs(omega) / steps_per_revolution;
+}
+
+double ProblemSteps::steps_per_sample(double sample_dt, double critical_dt) const {
+  return std::max(1.0, std::ceil(sample_dt / (step_safety * critical_dt)));
 }
 
 int Problem::n_dofs() const {
@@ -110,6 +123,7 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     p.contact.friction_coefficient = r.friction_coefficient;
     p.contact.rotation_speed = r.rotation_speed;
     p.contact.sliding_speed = r.sliding_speed();
+    p.contact.sliding_against_rotation = r.sliding_against_rotation;
     p.contact.contact_nodes = std::move(points.contact_nodes);
     // ux, uy, uz of each contact node, the order rigid_surface_nodes reads them.
     for (int node : p.contact.contact_nodes)

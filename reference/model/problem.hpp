@@ -60,12 +60,17 @@ struct ProblemContact {
   /// Omega_s [rad/s]: how fast the casing slides past a tip (Omega with the
   /// rotation, -Omega against it: RubbingSetup::sliding_speed).
   double sliding_speed = 0.0;
+  /// The casing slides against the rotation (Omega_s = -Omega).
+  bool sliding_against_rotation = false;
   /// The system dofs the law reads on the rotor side (paper: the tips' u, v;
   /// component: the contact nodes' ux, uy, uz), in contact order.
   std::vector<int> rotor_dofs;
   /// component: the contact nodes' ids, in contact order (empty for the paper).
   std::vector<int> contact_nodes;
   int n_contacts() const;
+  /// Omega_s at rotation speed `omega` (a run at another speed than the
+  /// case's: rsi sweep), with or against the rotation as the case says.
+  double sliding_speed_at(double omega) const { return sliding_against_rotation ? -omega : omega; }
 };
 
 /// The casing: rigid with an imposed gap, or a flexible structure.
@@ -101,6 +106,15 @@ struct ProblemSteps {
   /// Steps of the fixed rule (round(duration / step)); 0 for per_revolution,
   /// whose count needs omega_max.
   long fixed_steps() const;
+  // per_revolution, in double (a caller checks the counts before an integer
+  // holds them; every method's runs sample at the same instants j T / N):
+  /// The samples of `revolutions`: max(1, round(revolutions N)).
+  double samples(double revolutions) const;
+  /// T / N at rotation speed `omega` [s], T = 2 pi / |omega|.
+  double sample_step(double omega) const;
+  /// k, the steps a sample: the smallest integer >= 1 with
+  /// sample_dt / k <= step_safety x critical_dt (the model's 2/omega_max).
+  double steps_per_sample(double sample_dt, double critical_dt) const;
 };
 
 /// What a run writes beside the solver's state.

@@ -1,6 +1,10 @@
 #include "full_order_run.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 
@@ -8,6 +12,7 @@
 #include "central_difference.hpp"
 #include "modal_analysis.hpp"
 #include "paper_monitor.hpp"
+#include "rubbing_monitor.hpp"
 
 namespace rsi {
 namespace {
@@ -100,10 +105,10 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
   s.final_damping_work = cd.damping_work();
 }
 
-RunResult run_full_order(const Problem& problem, const RunOptions& options) {
-  if (problem.steps.rule != ProblemSteps::Rule::fixed)
-    throw std::invalid_argument(problem.source +
-                                ": run_full_order takes the fixed step rule (the paper's kind)");
+namespace {
+
+/// The fixed step rule (the paper's kind).
+RunResult run_fixed_step(const Problem& problem, const RunOptions& options) {
   const Clock::time_point start = Clock::now();
   const double dt = problem.steps.step;
   const Eigen::SparseMatrix<double> k = problem.stiffness();
@@ -145,6 +150,75 @@ RunResult run_full_order(const Problem& problem, const RunOptions& options) {
   system.tip_dofs = problem.contact.rotor_dofs;
   drive_full_order(system, monitor, s, start);
   return result;
+}
+
+/// The per-revolution rule (a component on the rigid casing).
+RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
+                             const RunPoint& point) {
+  if (problem.contact.kind != ContactKind::rigid_surface)
+    throw std::invalid_argument(problem.source + ": no rubbing set-up to run");
+  const Component& rotor = problem.structures.front();
+  const ProblemSteps& rule = problem.steps;
+  const double omega = point.rotation_speed != 0.0 ? point.rotation_speed
+                                                   : problem.contact.rotation_speed;
+  const double revolutions = point.revolutions > 0.0 ? point.revolutions : rule.revolutions;
+  const Clock::time_point start = Clock::now();
+  RunResult result;
+  RunSummary& s = result.summary;
+  s.method = "full";
+  s.n_dofs = static_cast<int>(rotor.stiffness.rows());
+  const double omega_max =
+      point.omega_max > 0.0 ? point.omega_max : max_angular_frequency(rotor.stiffness, rotor.mass);
+  const double sample_dt = rule.sample_step(omega);
+  const double k = rule.steps_per_sample(sample_dt, 2.0 / omega_max);
+  const double steps = rule.samples(revolutions) * k;
+  if (!(steps <= std::numeric_limits<int>::max()))
+    throw std::invalid_argument(problem.source + ": " + std::to_string(std::llround(steps)) +
+                                " steps, more than a run counts");
+  const double dt = sample_dt / k;
+  check_time_step(dt, omega_max, options.force, s);
+  s.bladed_disk_critical_dt = s.critical_dt;
+
+  // The response dof rides in the rows as the one "tip", gathered on output
+  // steps.
+  RunOptions run = options;
+  run.tip_displacement = problem.outputs.response_dof >= 0;
+  MonitorRules rules;
+  rules.steps_requested = static_cast<int>(steps);
+  rules.output_every = static_cast<std::int64_t>(k) * problem.outputs.output_every;
+  rules.energy_every = rules.output_every;
+  rules.row_at_last_step = false;
+  rules.balance_tolerance = rubbing_balance_tolerance;
+  const StructureContact contact(problem, omega);
+  RunMonitor monitor(rules, std::make_unique<RubbingMonitor>(*contact.rigid_surface()), run,
+                     result);
+  FullOrderSystem system;
+  system.stiffness = &rotor.stiffness;
+  system.mass = &rotor.mass;
+  system.dt = dt;
+  system.damping = problem.damping.rayleigh;
+  system.contact = &contact;
+  if (run.tip_displacement) system.tip_dofs = {problem.outputs.response_dof};
+  system.failure_is_status = true;
+  drive_full_order(system, monitor, s, start);
+  // A component run's clocks include its rows' output (as its reduced runs'
+  // do: campaign/rubbing_run.hpp compares them).
+  s.integration_seconds += s.output_seconds;
+  s.wall_seconds += s.output_seconds;
+  s.output_seconds = 0.0;
+  return result;
+}
+
+} // namespace
+
+RunResult run_full_order(const Problem& problem, const RunOptions& options,
+                         const RunPoint& point) {
+  if (problem.steps.rule == ProblemSteps::Rule::per_revolution)
+    return run_per_revolution(problem, options, point);
+  if (point.rotation_speed != 0.0 || point.revolutions != 0.0)
+    throw std::invalid_argument(problem.source + ": a run at another speed or length than the "
+                                                 "case's takes the per-revolution step rule");
+  return run_fixed_step(problem, options);
 }
 
 } // namespace rsi

@@ -58,11 +58,35 @@ struct FullOrderSystem {
 void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSummary& summary,
                       Clock::time_point start);
 
-/// The full-order run of a problem with the fixed step rule (the paper's
-/// kind): the stability checks of each structure (check_time_step_bound,
-/// then check_time_step on the largest omega_max), the paper's monitor,
-/// rows kept or streamed as RunOptions says. Throws StabilityError,
-/// IntegrationError or ModalError; std::invalid_argument for another rule.
-RunResult run_full_order(const Problem& problem, const RunOptions& options);
+/// Where a run departs from its problem's case (zero: the case's value).
+struct RunPoint {
+  /// Omega [rad/s] in place of the case's: the gap's phase, the casing's
+  /// sliding and the period T (rsi sweep's speeds). Rigid casing only.
+  double rotation_speed = 0.0;
+  double revolutions = 0.0; ///< per_revolution: the run's length
+  /// omega_max of the rotor's (K, M) when the caller has it [rad/s] (0:
+  /// computed here, by Lanczos).
+  double omega_max = 0.0;
+};
+
+/// The relative tolerance of a rubbing run's energy balance (rigid casing,
+/// per_revolution): round-off of the central-difference balance over the
+/// run's steps, far below any physical term.
+constexpr double rubbing_balance_tolerance = 1e-8;
+
+/// The full-order run of any problem, by its step rule:
+/// - fixed (the paper's kind): the stability checks of each structure
+///   (check_time_step_bound, then check_time_step on the largest omega_max),
+///   the paper's monitor, rows kept or streamed as RunOptions says;
+/// - per_revolution (a component on the rigid casing): dt = T/(k N)
+///   (ProblemSteps::steps_per_sample under 2/omega_max of the rotor), the
+///   rubbing monitor, a row at t = 0 and every k x output_every steps with
+///   the response dof as the row's one tip displacement; a failed contact
+///   solve stops the run as its status; the clocks include the rows' output.
+/// Throws StabilityError, IntegrationError or ModalError;
+/// std::invalid_argument for a problem without contact, a RunPoint the
+/// rule does not take, or more steps than a run counts.
+RunResult run_full_order(const Problem& problem, const RunOptions& options,
+                         const RunPoint& point = {});
 
 } // namespace rsi

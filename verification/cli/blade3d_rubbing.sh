@@ -2,7 +2,7 @@
 # Issue 12 item 5: the project's gmsh blade (data/cases/blade3d-rubbing.json,
 # 4,101 dofs, HRZ-lumped mass) rubbing on the oval rigid casing, one
 # revolution: `rsi campaign` runs the full-order explicit reference
-# (reference/solver/component_reference_run) and CB, CCM, MacNeal with 10,
+# (reference/solver/full_order_run on the case's problem) and CB, CCM, MacNeal with 10,
 # 20, 50 modes (reduced/component_integrator), each at its own stable step,
 # sampled at the same 1000 instants. Checked here, per run:
 #  - e2 and e_inf of the response dof (node 11, y) and of the normal contact

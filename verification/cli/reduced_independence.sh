@@ -4,7 +4,7 @@
 # Fails if any file of reduced/ includes a header of reference/contact/ (read
 # from the folder, so a new contact law is covered when it is added) or of
 # the reference integrator, its drivers and their monitors (central_difference,
-# mass_factor, reference_run, component_reference_run, full_order_run,
+# mass_factor, reference_run, full_order_run,
 # rubbing_monitor); or if an integrator is stepped anywhere in reduced/ but
 # the loop reduced_drive.cpp (a second time loop).
 # Usage: reduced_independence.sh SOURCE_DIR
@@ -18,7 +18,7 @@ if [ -z "$contact" ]; then
   echo "0 passed, 1 failed"
   exit 1
 fi
-integrator='central_difference|mass_factor|reference_run|component_reference_run|full_order_run|rubbing_monitor'
+integrator='central_difference|mass_factor|reference_run|full_order_run|rubbing_monitor'
 forbidden="#include \"($contact|$integrator)\\.hpp\""
 if hits=$(grep -rnE "$forbidden" "$src/reduced"); then
   echo "FAIL reduced/ includes reference integrator or contact code:"

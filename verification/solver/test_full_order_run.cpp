@@ -55,7 +55,7 @@ TEST(FullOrderRun, ForcedComponentClosesTheBalanceWithTheExternalWork) {
   rules.output_every = 100;
   rules.energy_every = 100;
   rules.row_at_last_step = false;
-  rules.balance_tolerance = 1e-8; // the component runs' (ComponentReferenceOptions)
+  rules.balance_tolerance = rubbing_balance_tolerance; // the component runs'
   RunMonitor monitor(rules, std::make_unique<RubbingMonitor>(*contact.rigid_surface()), options,
                      result);
   FullOrderSystem system;

@@ -30,14 +30,14 @@ namespace {
 
 /// The set-up the report reads (rubbing.json).
 std::string rubbing_json(const RubbingModel& model) {
-  const RubbingSetup& s = model.setup;
+  const RubbingSetup& s = model.setup();
   nlohmann::ordered_json j;
-  j["case"] = model.component_case.case_path;
-  j["component"] = model.component_case.name;
-  j["dofs"] = model.component.n_dofs();
-  j["mass"] = model.component_case.lumped_mass ? "lumped" : "consistent";
-  j["units"] = model.component_case.units;
-  j["contact_nodes"] = model.contact_nodes;
+  j["case"] = model.component_case().case_path;
+  j["component"] = model.component_case().name;
+  j["dofs"] = model.component().n_dofs();
+  j["mass"] = model.component_case().lumped_mass ? "lumped" : "consistent";
+  j["units"] = model.component_case().units;
+  j["contact_nodes"] = model.contact_nodes();
   j["gap"] = s.oval_gap ? "oval" : "constant";
   j["gap_value"] = s.gap;
   j["gap_width"] = s.gap_width;
@@ -48,10 +48,10 @@ std::string rubbing_json(const RubbingModel& model) {
   j["full_revolutions"] = s.full_revolutions;
   j["steps_per_revolution"] = s.steps_per_revolution;
   j["output_every"] = s.output_every;
-  j["response"] = model.response_name;
-  j["modal_ratio"] = model.component_case.damping.modal_ratio;
-  j["rayleigh_alpha"] = model.component_case.damping.rayleigh.alpha;
-  j["rayleigh_beta"] = model.component_case.damping.rayleigh.beta;
+  j["response"] = model.response_name();
+  j["modal_ratio"] = model.component_case().damping.modal_ratio;
+  j["rayleigh_alpha"] = model.component_case().damping.rayleigh.alpha;
+  j["rayleigh_beta"] = model.component_case().damping.rayleigh.beta;
   return j.dump(2) + "\n";
 }
 
@@ -59,8 +59,8 @@ std::string rubbing_json(const RubbingModel& model) {
 void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, const std::string& dir,
                StagedOutput& output) {
   output.make(dir);
-  ComponentHistoryFile history(dir + "/history.csv", model.response_name,
-                               static_cast<int>(model.contact_nodes.size()));
+  ComponentHistoryFile history(dir + "/history.csv", model.response_name(),
+                               static_cast<int>(model.contact_nodes().size()));
   const ComponentRowSink sink = [&history](const HistoryRow& row, double response) {
     history.append(row, response);
   };
@@ -88,7 +88,7 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
     throw UsageError("--target-e2: only for the paper's case; a component case's convergence.csv "
                      "lists every run's e2");
   const RubbingModel model = load_rubbing_model(c, options.load);
-  const RubbingSetup& setup = model.setup;
+  const RubbingSetup& setup = model.setup();
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
   std::vector<RubbingCampaignRun> runs = rubbing_campaign_runs(setup);
   for (RubbingCampaignRun& r : runs) {
@@ -113,7 +113,7 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
     const RunSummary& s = r.run.summary;
     const RubbingErrorNorms e =
         reference && r.error.empty() ? rubbing_error_norms(r, *reference) : RubbingErrorNorms{};
-    const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes.size();
+    const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes().size();
     csv << r.method << ',' << r.modes << ',' << s.n_dofs << ',' << s.dt << ',' << s.critical_dt
         << ',' << r.run.step_limit << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
         << s.basis_seconds << ',' << s.integration_seconds << ','

@@ -30,8 +30,8 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
                           (options.method == "full" ? " model, omega_max)" : " basis, omega_max)"));
   const RubbingModel model = load_rubbing_model(c, options.load);
   const std::string dir = output.open(options.out, "--out", simulate_output_set());
-  const int nc = static_cast<int>(model.contact_nodes.size());
-  ComponentHistoryFile history_file(dir + "/history.csv", model.response_name, nc);
+  const int nc = static_cast<int>(model.contact_nodes().size());
+  ComponentHistoryFile history_file(dir + "/history.csv", model.response_name(), nc);
   const ComponentRowSink sink = [&](const HistoryRow& row, double response) {
     history_file.append(row, response);
   };
@@ -60,7 +60,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   std::printf("omega_max %.6e rad/s, critical step %.6e s, step %.6e s (%d a sample, %d samples a "
               "revolution)\n",
               s.omega_max, s.critical_dt, s.dt, result.steps_per_sample,
-              model.setup.steps_per_revolution);
+              model.setup().steps_per_revolution);
   std::printf("status: %s\n", s.status.c_str());
   std::printf("max penetration %.3e, min lambda %.3e, max lambda %.3e, max |lambda g| %.3e "
               "(model units)\n",
