@@ -49,6 +49,15 @@ const char* remedy_words(Remedy remedy) {
   case Remedy::reduced_friction_or_smaller_step:
     return "; change operating_point.friction_coefficient (friction that cancels the contacts' "
            "normal flexibility) or use a smaller step (time.step, --time-step)";
+  case Remedy::lumped_mass_or_reduced_method:
+    return ": set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+  case Remedy::component_lumped_mass_or_reduced_method:
+    return ": for a component set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+  case Remedy::corrected_or_lumped_mass:
+    return ": correct the component's mass (component.source) or set component.mass to "
+           "\"lumped\" (HRZ)";
+  case Remedy::lumped_mass_or_fewer_modes:
+    return "; set component.mass to \"lumped\" (HRZ, positive definite) or keep fewer modes";
   }
   return "";
 }

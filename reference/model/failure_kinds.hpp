@@ -53,6 +53,10 @@ enum class Remedy {
   smaller_step_or_force,                  ///< a step at or above the stability limit, not forced
   reduced_smaller_step,                   ///< a reduced run's contact solve failed at its step
   reduced_friction_or_smaller_step,       ///< a reduced run's contact problem has no solution
+  lumped_mass_or_reduced_method,          ///< a full-order run's M is not positive definite
+  component_lumped_mass_or_reduced_method, ///< the same, where the paper's case cannot reach it
+  corrected_or_lumped_mass,               ///< the modes or omega_max need a (semi-)definite M
+  lumped_mass_or_fewer_modes,             ///< a component's reduced mass is not positive definite
 };
 
 /// Which input failed and what to change, in the kernel's terms.

@@ -12,9 +12,9 @@ namespace {
 
 // What to change, for the messages of IntegrationError (issue 13, class 8).
 // The integrator serves the paper's case and the components: both keys.
-const std::string kMassRemedy =
-    "; the paper's case checks its M when it loads; a component's M must be positive definite "
-    "for a full-order run: set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+const std::string kMassWhy = "; the paper's case checks its M when it loads; a component's M "
+                            "must be positive definite for a full-order run";
+const FailureAdvice kMassAdvice = remedied_by({Remedy::lumped_mass_or_reduced_method});
 const std::string kStepRemedy =
     "; use a smaller step (time.step; a component's rubbing.step_safety), without --force";
 const std::string kContactRemedy =
@@ -186,12 +186,12 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
     // not A^-1: one solve with a factor of M' made for it.
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass{Eigen::SparseMatrix<double>(m_m)};
     if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
-      throw IntegrationError("central differences: the mass matrix is not positive definite" +
-                             kMassRemedy);
+      throw IntegrationError(
+          "central differences: the mass matrix is not positive definite" + kMassWhy, kMassAdvice);
     m_u_prev = mass.solve(m_u_prev).eval();
     if (mass.info() != Eigen::Success || !m_u_prev.allFinite())
-      throw IntegrationError("central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed" +
-                             kMassRemedy);
+      throw IntegrationError(
+          "central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed" + kMassWhy, kMassAdvice);
   } else {
     apply_inverse_mass(m_u_prev);
   }
