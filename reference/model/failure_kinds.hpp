@@ -57,6 +57,10 @@ enum class Remedy {
   component_lumped_mass_or_reduced_method, ///< the same, where the paper's case cannot reach it
   corrected_or_lumped_mass,               ///< the modes or omega_max need a (semi-)definite M
   lumped_mass_or_fewer_modes,             ///< a component's reduced mass is not positive definite
+  smaller_step_unforced,                  ///< a full-order run's step did not settle or blew up
+  friction_or_smaller_step,               ///< a full-order run's contact problem has no solution
+  smaller_step_safety_unforced,           ///< a reduced component run blew up
+  smaller_step_safety_or_friction,        ///< a reduced component run's contact solve failed
 };
 
 /// Which input failed and what to change, in the kernel's terms.
