@@ -18,6 +18,8 @@ const char* input_name(FailedInput input) {
     return "casing_modes";
   case FailedInput::time_step_value:
     return "time.step";
+  case FailedInput::ccx_cache:
+    return "--ccx-cache";
   }
   return "";
 }

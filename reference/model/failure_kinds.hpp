@@ -38,6 +38,7 @@ enum class FailedInput {
   method,            ///< the reduction method (full, cb, ccm, guyan, macneal)
   casing_mode_count, ///< the number of casing modes of a reduced run
   time_step_value,   ///< the case's time step, the text starting with its value ("= dt s ...")
+  ccx_cache,         ///< the folder ccx's and gmsh's outputs are cached in
 };
 
 /// What the user can change, appended to the kernel's text in this order.
