@@ -80,7 +80,7 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
       m_sweeps += r.sweeps;
       if (!r.converged())
         throw ComponentIntegrationError(kWhere + "step " + std::to_string(step) +
-                                        " (t = " + message_number(step * m_dt) +
+                                            " (t = " + message_number(step * m_dt) +
                                             " s): contact solve failed: " + r.message,
                                         remedied_by({Remedy::smaller_step_safety_or_friction}));
       m_lambda_next.setZero();

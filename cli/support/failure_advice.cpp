@@ -91,7 +91,9 @@ std::string failure_message(const std::exception& e) {
   return with_advice(e.what(), advice_of(e));
 }
 
-std::string run_status(const RunSummary& s) { return with_advice(s.status, s.status_advice); }
+std::string run_status(const RunSummary& s) {
+  return with_advice(s.status, s.status_advice);
+}
 
 std::string without_force(const std::string& what, const std::string& remedy) {
   const std::string force = " or --force";

@@ -213,7 +213,7 @@ std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache
                               const std::string& cache_name) {
   const std::string step = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
   const fs::path entry = cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"},
-                                   cache_dir, incomplete_matrices, cache_name);
+                                    cache_dir, incomplete_matrices, cache_name);
   return (entry / "job").string();
 }
 

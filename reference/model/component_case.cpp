@@ -555,17 +555,21 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
   // The source override replaces the case's deck or folder, and nothing else: a case
   // whose model is more than that one path is refused, never half replaced.
   if (!options.source_override.empty() && !c.calculix_matrices.empty())
-    throw CaseError(c.case_path + ": key 'component.source.calculix_matrices': the case reads "
-                    "the matrices " + c.calculix_matrices + ".{sti,mas,dof} of a ccx run of " +
-                    c.source_path + ", and " + options.source_named() + " names the deck " +
+    throw CaseError(c.case_path +
+                    ": key 'component.source.calculix_matrices': the case reads "
+                    "the matrices " +
+                    c.calculix_matrices + ".{sti,mas,dof} of a ccx run of " + c.source_path +
+                    ", and " + options.source_named() + " names the deck " +
                     options.source_override +
                     ": rsi would mix that deck's nodes and sets with the other deck's matrices; "
-                    "drop " + options.source_named() +
-                    ", or run it on a case without calculix_matrices");
+                    "drop " +
+                    options.source_named() + ", or run it on a case without calculix_matrices");
   if (!options.source_override.empty() && c.source == ComponentSource::gmsh_blade)
-    throw CaseError(c.case_path + ": key 'component.source.gmsh_blade': the case builds its "
-                    "blade deck from these parameters, and " + options.source_named() +
-                    " names " + options.source_override + ": " + options.source_named() +
+    throw CaseError(c.case_path +
+                    ": key 'component.source.gmsh_blade': the case builds its "
+                    "blade deck from these parameters, and " +
+                    options.source_named() + " names " + options.source_override + ": " +
+                    options.source_named() +
                     " replaces a calculix_deck or matrix_market source only; write a case whose "
                     "calculix_deck names that deck (with its boundary) instead");
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
@@ -581,8 +585,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
       source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
     if (!std::filesystem::is_regular_file(source))
       throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
-                        "' is not a file (the deck; " + options.source_named() +
-                        " overrides it)");
+                        "' is not a file (the deck; " + options.source_named() + " overrides it)");
     const CalculixDeck deck = read_calculix_deck(source);
     check_calculix_features(deck);
     std::vector<int> boundary = c.boundary_nodes;

@@ -13,7 +13,7 @@ namespace {
 // What to change, for the messages of IntegrationError: the integrator
 // serves the paper's case and the components (the CLI names both keys).
 const std::string kMassWhy = "; the paper's case checks its M when it loads; a component's M "
-                            "must be positive definite for a full-order run";
+                             "must be positive definite for a full-order run";
 const FailureAdvice kMassAdvice = remedied_by({Remedy::lumped_mass_or_reduced_method});
 const FailureAdvice kStepRemedy = remedied_by({Remedy::smaller_step_unforced});
 const FailureAdvice kContactRemedy = remedied_by({Remedy::friction_or_smaller_step});
@@ -273,8 +273,8 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     m_lu.compute(m_w_active);
     if (!m_lu.isInvertible())
       throw IntegrationError("central differences: singular contact matrix W (" +
-                             std::to_string(na) + " active constraints) at step " +
-                             std::to_string(m_n + 1),
+                                 std::to_string(na) + " active constraints) at step " +
+                                 std::to_string(m_n + 1),
                              kContactRemedy);
     m_lambda_active = m_lu.solve(m_rhs);
     const Eigen::VectorXd& la = m_lambda_active;
@@ -303,7 +303,7 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     return;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
-                         std::to_string(m_n + 1),
+                             std::to_string(m_n + 1),
                          kStepRemedy);
 }
 
@@ -431,13 +431,13 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
     const FrictionalContactSolution solution = m_solver.solve(problem, initial);
     if (!solution.ok())
       throw IntegrationError("central differences: the frictional contact solver failed at step " +
-                             std::to_string(m_n + 1) + " (" + std::to_string(np) +
-                             " contacts in play): " + solution.message,
+                                 std::to_string(m_n + 1) + " (" + std::to_string(np) +
+                                 " contacts in play): " + solution.message,
                              kContactRemedy);
     if (!solution.lambda.allFinite())
       throw IntegrationError("central differences: non-finite contact multipliers at step " +
-                             std::to_string(m_n + 1),
-                         kStepRemedy);
+                                 std::to_string(m_n + 1),
+                             kStepRemedy);
     // u_{n+1} - u~ = dt^2 A^-1 B^T lambda.
     m_correction.setZero(m_m.rows());
     for (int a = 0; a < np; ++a)
@@ -484,8 +484,8 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
   }
   throw IntegrationError(
       "central differences: the set of contacts in play did not settle at step " +
-      std::to_string(m_n + 1),
-                         kStepRemedy);
+          std::to_string(m_n + 1),
+      kStepRemedy);
 }
 
 StepReport CentralDifference::step_coulomb() {
@@ -498,8 +498,8 @@ StepReport CentralDifference::step_coulomb() {
   const FrictionalContactGeometry& geo = m_geometry;
   if (!geo.normal_gap.allFinite() || !geo.slip.allFinite())
     throw IntegrationError("central differences: non-finite predicted gap or slip at step " +
-                           std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
-                           " s): the state blew up",
+                               std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
+                               " s): the state blew up",
                            kStepRemedy);
   bool any = false;
   for (int c = 0; c < nc; ++c) {

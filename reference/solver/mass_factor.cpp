@@ -86,7 +86,7 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
       c.factor->is_ll || c.factor->is_super)
     throw MassFactorError(
         "the mass matrix is not positive definite (CHOLMOD factorization failed, status " +
-        std::to_string(c.common.status) + ")" + kMassWhy,
+            std::to_string(c.common.status) + ")" + kMassWhy,
         kMassAdvice);
   // Simplicial LDL^T: D_jj is the first entry of column j (AMD order), then L's.
   const cholmod_factor& f = *c.factor;
@@ -98,8 +98,8 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   for (int j = 0; j < n; ++j)
     if (!(x[p[j]] > 0.0))
       throw MassFactorError("the mass matrix is not positive definite (LDL^T pivot " +
-                            std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) + ")" +
-                                kMassWhy,
+                                std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) +
+                                ")" + kMassWhy,
                             kMassAdvice);
 
   // P: AMD, then the columns sorted by component and level (ties kept in

@@ -8,12 +8,12 @@
 #include "failure_advice.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
-#include "rubbing_run.hpp"
 #include "output_sets.hpp"
+#include "rubbing_run.hpp"
 #include "run_outputs.hpp"
 #include "simulate_options.hpp"
-#include "terminal_progress.hpp"
 #include "staged_output.hpp"
+#include "terminal_progress.hpp"
 #include "usage_error.hpp"
 
 namespace rsi {
