@@ -67,7 +67,7 @@ void run_paper_campaign(const Case& c, std::vector<PaperCampaignJob>& jobs, int 
           r.modes_kept = reduced.basis.n_modes;
           r.result = std::move(reduced.run);
         }
-        if (!r.result.summary.completed) r.error = r.result.summary.status;
+        if (!r.result.summary.completed) r.error = run_status(r.result.summary);
       } catch (const std::bad_alloc&) {
         throw; // out of memory ends the campaign (exit 1, --out as it was), not one run
       } catch (const StabilityError& e) {

@@ -41,7 +41,7 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
     entry.error = failure_message(e);
     return false;
   }
-  if (!entry.run.summary.completed) entry.error = entry.run.summary.status;
+  if (!entry.run.summary.completed) entry.error = run_status(entry.run.summary);
   return true;
 }
 

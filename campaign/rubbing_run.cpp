@@ -137,6 +137,7 @@ RunSummary summary_of(const ComponentRunSummary& c, const std::string& method, i
   s.steps = static_cast<int>(c.steps);
   s.completed = c.completed;
   s.status = c.status;
+  s.status_advice = c.status_advice;
   s.dt = c.dt;
   s.omega_max = c.omega_max;
   s.critical_dt = c.critical_dt;

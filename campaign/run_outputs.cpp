@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "failure_advice.hpp"
+
 namespace rsi {
 namespace {
 
@@ -104,7 +106,7 @@ std::string casing_snapshot_csv(const Eigen::VectorXd& u, const Eigen::VectorXd&
 std::string summary_json(const RunSummary& s) {
   nlohmann::ordered_json j;
   j["method"] = s.method;
-  j["status"] = s.status;
+  j["status"] = run_status(s);
   j["completed"] = s.completed;
   j["dofs"] = s.n_dofs;
   j["steps_requested"] = s.steps_requested;

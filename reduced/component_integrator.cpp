@@ -122,9 +122,9 @@ StepReport ComponentIntegrator::step() {
   ++m_n;
   if (!m_rotor->finite() || !m_casing->gap().allFinite())
     throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n) +
-                                    " (t = " + message_number(time()) +
-                                    " s): the state is not finite (blow-up); use a smaller "
-                                    "rubbing.step_safety, without --force");
+                                        " (t = " + message_number(time()) +
+                                        " s): the state is not finite (blow-up)",
+                                    remedied_by({Remedy::smaller_step_safety_unforced}));
   return report;
 }
 

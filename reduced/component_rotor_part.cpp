@@ -28,10 +28,8 @@ ComponentRotorPart::ComponentRotorPart(const ReducedBasis& basis,
   m_m = basis.mass;
 }
 
-const std::string& ComponentRotorPart::mass_remedy() {
-  static const std::string remedy =
-      "; set component.mass to \"lumped\" (HRZ, positive definite) or keep fewer modes";
-  return remedy;
+FailureAdvice ComponentRotorPart::mass_remedy() {
+  return remedied_by({Remedy::lumped_mass_or_fewer_modes});
 }
 
 const std::string& ComponentRotorPart::where() {

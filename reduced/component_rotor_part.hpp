@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 
 #include "component_integrator_options.hpp"
+#include "failure_kinds.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
@@ -90,7 +91,7 @@ protected:
   static Eigen::VectorXd take(const Eigen::VectorXd& a, const std::vector<int>& rows);
   /// What to change when the reduced mass fails: a consistent mass may be
   /// singular (Rotor 37's C3D15), T^T M T with it.
-  static const std::string& mass_remedy();
+  static FailureAdvice mass_remedy();
   /// The prefix of the messages.
   static const std::string& where();
 

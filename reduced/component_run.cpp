@@ -62,6 +62,7 @@ public:
     if (dynamic_cast<const ComponentIntegrationError*>(&failure) == nullptr) return false;
     m_s.completed = false;
     m_s.status = failure.what();
+    m_s.status_advice = failure.advice();
     return true;
   }
 

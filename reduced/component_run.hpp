@@ -64,6 +64,7 @@ struct ComponentRunSummary {
   std::int64_t steps = 0;
   bool completed = false;
   std::string status;
+  FailureAdvice status_advice; ///< what to change, when a failure stopped the run
   double dt = 0.0, omega_max = 0.0, critical_dt = 0.0;
   double integration_seconds = 0.0;     ///< wall time of the step loop
   double integration_cpu_seconds = 0.0; ///< the process's CPU time over it (std::clock)

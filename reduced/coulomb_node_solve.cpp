@@ -80,10 +80,9 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
       m_sweeps += r.sweeps;
       if (!r.converged())
         throw ComponentIntegrationError(kWhere + "step " + std::to_string(step) +
-                                        " (t = " + message_number(step * m_dt) +
-                                        " s): contact solve failed: " + r.message +
-                                        "; use a smaller rubbing.step_safety or "
-                                        "rubbing.friction_coefficient");
+                                            " (t = " + message_number(step * m_dt) +
+                                            " s): contact solve failed: " + r.message,
+                                        remedied_by({Remedy::smaller_step_safety_or_friction}));
       m_lambda_next.setZero();
       m_state.assign(m_nc, ReducedContactState::open);
       for (int i = 0; i < na; ++i) {

@@ -17,7 +17,7 @@ MassCarryingBoundaryPart::MassCarryingBoundaryPart(const ReducedBasis& basis,
   const Eigen::LLT<Eigen::MatrixXd> llt(a);
   if (llt.info() != Eigen::Success)
     throw ComponentIntegrationError(where() + "M^ + dt/2 C^ of the " + basis.method +
-                                    " model is not positive definite (Cholesky failed)" +
+                                        " model is not positive definite (Cholesky failed)",
                                     mass_remedy());
   m_p = (m_dt * m_dt) * llt.solve(m_k);
   if (m_c.size()) m_d = m_dt * llt.solve(Eigen::MatrixXd(m_c.asDiagonal()));

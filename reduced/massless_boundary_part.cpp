@@ -34,9 +34,8 @@ MasslessBoundaryPart::MasslessBoundaryPart(const ReducedBasis& basis,
   if (m_c.size()) ai.diagonal() += 0.5 * m_dt * take(m_c, m_interior);
   const Eigen::LLT<Eigen::MatrixXd> llt(ai);
   if (llt.info() != Eigen::Success)
-    throw ComponentIntegrationError(where() +
-                                    "M^_II + dt/2 C^_I is not positive definite "
-                                    "(Cholesky failed)" +
+    throw ComponentIntegrationError(where() + "M^_II + dt/2 C^_I is not positive definite "
+                                              "(Cholesky failed)",
                                     mass_remedy());
   // With u_B^n = Z q_I^n + S B_B^T lambda_n (the balance (B)), the force of
   // (I) is K^_II q + K^_IB u_B = K_c q + K^_IB S B_B^T lambda_n, K_c the

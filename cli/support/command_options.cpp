@@ -75,6 +75,9 @@ CLI::Validator case_file() {
 }
 
 void add_component_options(CLI::App& command, ComponentLoadOptions& load) {
+  // The loader's messages name the two inputs as the user gave them.
+  load.source_name = "--source";
+  load.ccx_cache_name = "--ccx-cache";
   command
       .add_option("--source", load.source_override,
                   "component case only: the deck or Matrix Market folder to read instead of "

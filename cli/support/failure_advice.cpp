@@ -18,6 +18,8 @@ const char* input_name(FailedInput input) {
     return "casing_modes";
   case FailedInput::time_step_value:
     return "time.step";
+  case FailedInput::ccx_cache:
+    return "--ccx-cache";
   }
   return "";
 }
@@ -49,6 +51,25 @@ const char* remedy_words(Remedy remedy) {
   case Remedy::reduced_friction_or_smaller_step:
     return "; change operating_point.friction_coefficient (friction that cancels the contacts' "
            "normal flexibility) or use a smaller step (time.step, --time-step)";
+  case Remedy::lumped_mass_or_reduced_method:
+    return ": set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+  case Remedy::component_lumped_mass_or_reduced_method:
+    return ": for a component set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+  case Remedy::corrected_or_lumped_mass:
+    return ": correct the component's mass (component.source) or set component.mass to "
+           "\"lumped\" (HRZ)";
+  case Remedy::lumped_mass_or_fewer_modes:
+    return "; set component.mass to \"lumped\" (HRZ, positive definite) or keep fewer modes";
+  case Remedy::smaller_step_unforced:
+    return "; use a smaller step (time.step; a component's rubbing.step_safety), without --force";
+  case Remedy::friction_or_smaller_step:
+    return "; change the friction coefficient (operating_point.friction_coefficient; a "
+           "component's rubbing.friction_coefficient) or use a smaller step (time.step; "
+           "rubbing.step_safety)";
+  case Remedy::smaller_step_safety_unforced:
+    return "; use a smaller rubbing.step_safety, without --force";
+  case Remedy::smaller_step_safety_or_friction:
+    return "; use a smaller rubbing.step_safety or rubbing.friction_coefficient";
   }
   return "";
 }
@@ -68,6 +89,10 @@ std::string with_advice(const std::string& what, const FailureAdvice& advice) {
 
 std::string failure_message(const std::exception& e) {
   return with_advice(e.what(), advice_of(e));
+}
+
+std::string run_status(const RunSummary& s) {
+  return with_advice(s.status, s.status_advice);
 }
 
 std::string without_force(const std::string& what, const std::string& remedy) {

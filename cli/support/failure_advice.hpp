@@ -23,6 +23,10 @@ std::string with_advice(const std::string& what, const FailureAdvice& advice);
 /// two kinds of failure, e.what() for any other exception.
 std::string failure_message(const std::exception& e);
 
+/// What the user reads for the status of run `s`: "completed", or what
+/// stopped it with the advice of the failure that did (with_advice).
+std::string run_status(const RunSummary& s);
+
 // A step at or above the stability limit: `rsi simulate` offers --force;
 // `rsi campaign` and `rsi sweep` have none, so their messages name the keys
 // they read the step from instead.

@@ -19,6 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+/// The cache folder could not be created or written (the CLI names the
+/// option that set it).
+const FailureAdvice kCacheFailed = failed_input(FailedInput::ccx_cache);
+
 std::uint64_t fnv1a(const std::string& text, std::uint64_t h = 14695981039346656037ull) {
   for (unsigned char c : text) {
     h ^= c;
@@ -119,10 +123,12 @@ std::string incomplete_matrices(const fs::path& dir) {
 /// The cache entry for the model of `deck` followed by `step`: ccx run there
 /// unless it already exists (and is whole: `incomplete`, when given, says
 /// why an entry is not; such an entry, cut short after it was made, is run
-/// again). Returns the entry folder.
+/// again). Returns the entry folder. Messages name `cache_dir` after
+/// `cache_name` (how the caller's user gave it).
 fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std::string& tag,
                     const std::vector<std::string>& outputs, const std::string& cache_dir,
-                    std::string (*incomplete)(const fs::path&) = nullptr) {
+                    std::string (*incomplete)(const fs::path&) = nullptr,
+                    const std::string& cache_name = "the ccx cache") {
   const std::string text = deck.model_text + step;
   const fs::path entry = fs::path(cache_dir) / (fs::path(deck.path).stem().string() + "-" +
                                                 hex(fnv1a(text)) + "-" + tag);
@@ -134,19 +140,19 @@ fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std
   const std::string ccx = find_ccx();
   std::error_code ec;
   fs::create_directories(cache_dir, ec);
-  if (ec) throw ImportError("--ccx-cache: cannot create '" + cache_dir + "': " + ec.message());
+  if (ec) throw ImportError("cannot create '" + cache_dir + "': " + ec.message(), kCacheFailed);
   fs::path work = entry;
   work += ".tmp" + std::to_string(getpid());
   fs::remove_all(work, ec);
   fs::create_directories(work, ec);
-  if (ec) throw ImportError("--ccx-cache: cannot create '" + work.string() + "': " + ec.message());
+  if (ec) throw ImportError("cannot create '" + work.string() + "': " + ec.message(), kCacheFailed);
   {
     std::ofstream out(work / "job.inp", std::ios::binary);
     out << text;
     out.close();
     if (!out) {
       fs::remove_all(work, ec);
-      throw ImportError("--ccx-cache: cannot write " + (work / "job.inp").string());
+      throw ImportError("cannot write " + (work / "job.inp").string(), kCacheFailed);
     }
   }
   int status = 0;
@@ -167,8 +173,8 @@ fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std
       const fs::space_info space = fs::space(cache_dir, ec);
       fs::remove_all(work, ec);
       throw ImportError("ccx's output for " + deck.path + " is cut short (" + why +
-                        ") though ccx reported success: a write failed, the disk holding "
-                        "--ccx-cache " + cache_dir + " may be full (" +
+                        ") though ccx reported success: a write failed, the disk holding " +
+                        cache_name + " " + cache_dir + " may be full (" +
                         std::to_string(ec ? 0 : space.available / 1048576) +
                         " MB free now); nothing was cached: free space and run again");
     }
@@ -188,7 +194,7 @@ fs::path cached_run(const CalculixDeck& deck, const std::string& step, const std
   }
   fs::rename(work, entry, ec);
   if (ec && !fs::is_directory(entry))
-    throw ImportError("--ccx-cache: cannot rename " + work.string() + ": " + ec.message());
+    throw ImportError("cannot rename " + work.string() + ": " + ec.message(), kCacheFailed);
   fs::remove_all(work, ec);
   return entry;
 }
@@ -203,10 +209,11 @@ std::string find_ccx() {
   return "ccx";
 }
 
-std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir) {
+std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir,
+                              const std::string& cache_name) {
   const std::string step = "*STEP\n*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
   const fs::path entry = cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"},
-                                   cache_dir, incomplete_matrices);
+                                    cache_dir, incomplete_matrices, cache_name);
   return (entry / "job").string();
 }
 

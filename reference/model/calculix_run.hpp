@@ -25,8 +25,10 @@ std::string find_ccx();
 
 /// Prefix (path without extension) of JOB.sti, JOB.mas and JOB.dof for the
 /// model of `deck`, from ccx's `*FREQUENCY, SOLVER=MATRIXSTORAGE` step.
-/// Throws ImportError when ccx is missing or fails (its log's error lines).
-std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir);
+/// Throws ImportError when ccx is missing or fails (its log's error lines);
+/// a full disk's message names the folder after `cache_name`.
+std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache_dir,
+                              const std::string& cache_name = "the ccx cache");
 
 /// The `count` lowest eigenvalues omega^2 [rad^2/time^2] of the model of
 /// `deck` from ccx's own eigensolver (`*FREQUENCY` step, `count` modes), read

@@ -169,11 +169,12 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
     throw;
   } catch (const std::runtime_error& e) {
     std::filesystem::remove_all(work, ec);
-    throw ImportError(std::string("--ccx-cache: ") + e.what());
+    throw ImportError(e.what(), failed_input(FailedInput::ccx_cache));
   }
   std::filesystem::rename(work, entry, ec);
   if (ec && !std::filesystem::exists(entry / "blade.inp"))
-    throw ImportError("--ccx-cache: cannot rename " + work.string() + ": " + ec.message());
+    throw ImportError("cannot rename " + work.string() + ": " + ec.message(),
+                      failed_input(FailedInput::ccx_cache));
   std::filesystem::remove_all(work, ec);
   return (entry / "blade.inp").string();
 }
@@ -349,7 +350,8 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
 /// "key '...'" of the model's source, for messages about the model itself.
 std::string source_key(const ComponentCase& c, const ComponentLoadOptions& options, bool material) {
   if (!options.source_override.empty())
-    return "key 'component.source' (replaced by --source '" + options.source_override + "')";
+    return "key 'component.source' (replaced by " + options.source_named() + " '" +
+           options.source_override + "')";
   switch (c.source) {
   case ComponentSource::matrix_market:
     return "key 'component.source.matrix_market'";
@@ -539,21 +541,37 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   return c;
 }
 
+const std::string& ComponentLoadOptions::source_named() const {
+  static const std::string unnamed = "the source override";
+  return source_name.empty() ? unnamed : source_name;
+}
+
+const std::string& ComponentLoadOptions::ccx_cache_named() const {
+  static const std::string unnamed = "the ccx cache";
+  return ccx_cache_name.empty() ? unnamed : ccx_cache_name;
+}
+
 Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
-  // --source replaces the case's deck or folder, and nothing else: a case
+  // The source override replaces the case's deck or folder, and nothing else: a case
   // whose model is more than that one path is refused, never half replaced.
   if (!options.source_override.empty() && !c.calculix_matrices.empty())
-    throw CaseError(c.case_path + ": key 'component.source.calculix_matrices': the case reads "
-                    "the matrices " + c.calculix_matrices + ".{sti,mas,dof} of a ccx run of " +
-                    c.source_path + ", and --source names the deck " + options.source_override +
+    throw CaseError(c.case_path +
+                    ": key 'component.source.calculix_matrices': the case reads "
+                    "the matrices " +
+                    c.calculix_matrices + ".{sti,mas,dof} of a ccx run of " + c.source_path +
+                    ", and " + options.source_named() + " names the deck " +
+                    options.source_override +
                     ": rsi would mix that deck's nodes and sets with the other deck's matrices; "
-                    "drop --source, or run it on a case without calculix_matrices");
+                    "drop " +
+                    options.source_named() + ", or run it on a case without calculix_matrices");
   if (!options.source_override.empty() && c.source == ComponentSource::gmsh_blade)
-    throw CaseError(c.case_path + ": key 'component.source.gmsh_blade': the case builds its "
-                    "blade deck from these parameters, and --source names " +
-                    options.source_override + ": --source replaces a calculix_deck or "
-                    "matrix_market source only; write a case whose calculix_deck names that "
-                    "deck (with its boundary) instead");
+    throw CaseError(c.case_path +
+                    ": key 'component.source.gmsh_blade': the case builds its "
+                    "blade deck from these parameters, and " +
+                    options.source_named() + " names " + options.source_override + ": " +
+                    options.source_named() +
+                    " replaces a calculix_deck or matrix_market source only; write a case whose "
+                    "calculix_deck names that deck (with its boundary) instead");
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
   Component component;
   if (c.source == ComponentSource::matrix_market) {
@@ -567,7 +585,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
       source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
     if (!std::filesystem::is_regular_file(source))
       throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
-                        "' is not a file (the deck; --source overrides it)");
+                        "' is not a file (the deck; " + options.source_named() + " overrides it)");
     const CalculixDeck deck = read_calculix_deck(source);
     check_calculix_features(deck);
     std::vector<int> boundary = c.boundary_nodes;
@@ -596,7 +614,7 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
     std::string job = c.calculix_matrices;
     if (ran_ccx) {
       try {
-        job = calculix_matrices(deck, options.ccx_cache);
+        job = calculix_matrices(deck, options.ccx_cache, options.ccx_cache_named());
       } catch (const ImportError& e) {
         // ccx refused the model (its *ERROR lines follow): the source's key.
         // A missing, unstartable or killed ccx, or an unusable cache, is not
@@ -613,8 +631,9 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
       // A defect of the files rsi had ccx write (a zero mass on a dof ccx
       // made, say) is the deck's: say so before the cache file's name.
       if (!ran_ccx || std::string(e.what()).rfind(job, 0) != 0) throw;
-      throw ImportError(source + ": the matrices ccx wrote for this deck (in --ccx-cache " +
-                        options.ccx_cache + ") are not a component: " + e.what());
+      throw ImportError(source + ": the matrices ccx wrote for this deck (in " +
+                        options.ccx_cache_named() + " " + options.ccx_cache +
+                        ") are not a component: " + e.what());
     }
   }
   check_frequency_scale(component, c, options);

@@ -136,6 +136,12 @@ ComponentCase parse_component_case(const nlohmann::json& document, const std::st
 struct ComponentLoadOptions {
   std::string source_override;
   std::string ccx_cache = "out/ccx-cache";
+  /// How messages name the two inputs above: the caller's names for them
+  /// (the CLI's options); empty, "the source override" and "the ccx cache".
+  std::string source_name = {};
+  std::string ccx_cache_name = {};
+  const std::string& source_named() const;
+  const std::string& ccx_cache_named() const;
 };
 
 /// Builds the component: runs ccx (cached) on a deck, or reads a folder.

@@ -38,21 +38,30 @@ enum class FailedInput {
   method,            ///< the reduction method (full, cb, ccm, guyan, macneal)
   casing_mode_count, ///< the number of casing modes of a reduced run
   time_step_value,   ///< the case's time step, the text starting with its value ("= dt s ...")
+  ccx_cache,         ///< the folder ccx's and gmsh's outputs are cached in
 };
 
 /// What the user can change, appended to the kernel's text in this order.
 enum class Remedy {
-  fewer_jobs,                             ///< fewer runs at once
-  full_method_no_dense_casing,            ///< the full-order method holds no dense casing matrix
-  fewer_casing_modes,                     ///< a reduced casing's Rayleigh-Ritz step failed
-  fewer_modes_or_another_method,          ///< a reduced model lost its definiteness
-  fewer_modes_campaign_or_another_method, ///< the same, where a campaign's run list sets modes
-  massed_boundary_method,                 ///< a massless boundary whose condensation failed
-  fewer_modes_or_coarser_model,           ///< an eigensolver did not converge on the count asked
-  fewer_modes_or_report,                  ///< the modes failed their residual check
-  smaller_step_or_force,                  ///< a step at or above the stability limit, not forced
-  reduced_smaller_step,                   ///< a reduced run's contact solve failed at its step
-  reduced_friction_or_smaller_step,       ///< a reduced run's contact problem has no solution
+  fewer_jobs,                              ///< fewer runs at once
+  full_method_no_dense_casing,             ///< the full-order method holds no dense casing matrix
+  fewer_casing_modes,                      ///< a reduced casing's Rayleigh-Ritz step failed
+  fewer_modes_or_another_method,           ///< a reduced model lost its definiteness
+  fewer_modes_campaign_or_another_method,  ///< the same, where a campaign's run list sets modes
+  massed_boundary_method,                  ///< a massless boundary whose condensation failed
+  fewer_modes_or_coarser_model,            ///< an eigensolver did not converge on the count asked
+  fewer_modes_or_report,                   ///< the modes failed their residual check
+  smaller_step_or_force,                   ///< a step at or above the stability limit, not forced
+  reduced_smaller_step,                    ///< a reduced run's contact solve failed at its step
+  reduced_friction_or_smaller_step,        ///< a reduced run's contact problem has no solution
+  lumped_mass_or_reduced_method,           ///< a full-order run's M is not positive definite
+  component_lumped_mass_or_reduced_method, ///< the same, where the paper's case cannot reach it
+  corrected_or_lumped_mass,                ///< the modes or omega_max need a (semi-)definite M
+  lumped_mass_or_fewer_modes,              ///< a component's reduced mass is not positive definite
+  smaller_step_unforced,                   ///< a full-order run's step did not settle or blew up
+  friction_or_smaller_step,                ///< a full-order run's contact problem has no solution
+  smaller_step_safety_unforced,            ///< a reduced component run blew up
+  smaller_step_safety_or_friction,         ///< a reduced component run's contact solve failed
 };
 
 /// Which input failed and what to change, in the kernel's terms.

@@ -10,16 +10,13 @@ namespace rsi {
 
 namespace {
 
-// What to change, for the messages of IntegrationError (issue 13, class 8).
-// The integrator serves the paper's case and the components: both keys.
-const std::string kMassRemedy =
-    "; the paper's case checks its M when it loads; a component's M must be positive definite "
-    "for a full-order run: set component.mass to \"lumped\" (HRZ) or run a reduced --method";
-const std::string kStepRemedy =
-    "; use a smaller step (time.step; a component's rubbing.step_safety), without --force";
-const std::string kContactRemedy =
-    "; change the friction coefficient (operating_point.friction_coefficient; a component's "
-    "rubbing.friction_coefficient) or use a smaller step (time.step; rubbing.step_safety)";
+// What to change, for the messages of IntegrationError: the integrator
+// serves the paper's case and the components (the CLI names both keys).
+const std::string kMassWhy = "; the paper's case checks its M when it loads; a component's M "
+                             "must be positive definite for a full-order run";
+const FailureAdvice kMassAdvice = remedied_by({Remedy::lumped_mass_or_reduced_method});
+const FailureAdvice kStepRemedy = remedied_by({Remedy::smaller_step_unforced});
+const FailureAdvice kContactRemedy = remedied_by({Remedy::friction_or_smaller_step});
 
 /// M, once K, M and dt are checked to be usable together.
 const Eigen::SparseMatrix<double>& checked_mass(const Eigen::SparseMatrix<double>& stiffness,
@@ -186,12 +183,12 @@ void CentralDifference::start(const Eigen::Ref<const Eigen::VectorXd>& f0) {
     // not A^-1: one solve with a factor of M' made for it.
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> mass{Eigen::SparseMatrix<double>(m_m)};
     if (mass.info() != Eigen::Success || !(mass.vectorD().minCoeff() > 0.0))
-      throw IntegrationError("central differences: the mass matrix is not positive definite" +
-                             kMassRemedy);
+      throw IntegrationError(
+          "central differences: the mass matrix is not positive definite" + kMassWhy, kMassAdvice);
     m_u_prev = mass.solve(m_u_prev).eval();
     if (mass.info() != Eigen::Success || !m_u_prev.allFinite())
-      throw IntegrationError("central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed" +
-                             kMassRemedy);
+      throw IntegrationError(
+          "central differences: the start u_{-1} = dt^2/2 M^-1 F_0 failed" + kMassWhy, kMassAdvice);
   } else {
     apply_inverse_mass(m_u_prev);
   }
@@ -276,8 +273,9 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     m_lu.compute(m_w_active);
     if (!m_lu.isInvertible())
       throw IntegrationError("central differences: singular contact matrix W (" +
-                             std::to_string(na) + " active constraints) at step " +
-                             std::to_string(m_n + 1) + kContactRemedy);
+                                 std::to_string(na) + " active constraints) at step " +
+                                 std::to_string(m_n + 1),
+                             kContactRemedy);
     m_lambda_active = m_lu.solve(m_rhs);
     const Eigen::VectorXd& la = m_lambda_active;
     Eigen::Index most_negative = 0;
@@ -305,7 +303,8 @@ void CentralDifference::solve_active_set(const ContactState& s, Eigen::VectorXd&
     return;
   }
   throw IntegrationError("central differences: the active set did not settle at step " +
-                         std::to_string(m_n + 1) + kStepRemedy);
+                             std::to_string(m_n + 1),
+                         kStepRemedy);
 }
 
 void CentralDifference::add_damping_work() {
@@ -432,11 +431,13 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
     const FrictionalContactSolution solution = m_solver.solve(problem, initial);
     if (!solution.ok())
       throw IntegrationError("central differences: the frictional contact solver failed at step " +
-                             std::to_string(m_n + 1) + " (" + std::to_string(np) +
-                             " contacts in play): " + solution.message + kContactRemedy);
+                                 std::to_string(m_n + 1) + " (" + std::to_string(np) +
+                                 " contacts in play): " + solution.message,
+                             kContactRemedy);
     if (!solution.lambda.allFinite())
       throw IntegrationError("central differences: non-finite contact multipliers at step " +
-                             std::to_string(m_n + 1) + kStepRemedy);
+                                 std::to_string(m_n + 1),
+                             kStepRemedy);
     // u_{n+1} - u~ = dt^2 A^-1 B^T lambda.
     m_correction.setZero(m_m.rows());
     for (int a = 0; a < np; ++a)
@@ -483,7 +484,8 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
   }
   throw IntegrationError(
       "central differences: the set of contacts in play did not settle at step " +
-      std::to_string(m_n + 1) + kStepRemedy);
+          std::to_string(m_n + 1),
+      kStepRemedy);
 }
 
 StepReport CentralDifference::step_coulomb() {
@@ -496,8 +498,9 @@ StepReport CentralDifference::step_coulomb() {
   const FrictionalContactGeometry& geo = m_geometry;
   if (!geo.normal_gap.allFinite() || !geo.slip.allFinite())
     throw IntegrationError("central differences: non-finite predicted gap or slip at step " +
-                           std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
-                           " s): the state blew up" + kStepRemedy);
+                               std::to_string(m_n + 1) + " (t = " + std::to_string(t_next) +
+                               " s): the state blew up",
+                           kStepRemedy);
   bool any = false;
   for (int c = 0; c < nc; ++c) {
     m_in_play[c] = geo.normal_gap(c) < 0.0 || m_lambda(c) != 0.0 ||

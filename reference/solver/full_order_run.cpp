@@ -92,7 +92,7 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
       r = cd.step();
     } catch (const IntegrationError& e) {
       if (!system.failure_is_status) throw;
-      monitor.stop_with(e.what());
+      monitor.stop_with(e.what(), e.advice());
       break;
     }
     if (!monitor.after_step(r, state(monitor.needs_casing(r)), energy)) break;

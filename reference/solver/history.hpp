@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include "failure_kinds.hpp"
+
 namespace rsi {
 
 /// Contact monitors of one step, at the corrected u_{n+1} (SPEC §3, V5).
@@ -94,6 +96,9 @@ struct RunSummary {
   int steps = 0; ///< steps actually taken
   bool completed = false;
   std::string status; ///< "completed" or what stopped the run, with the step
+  /// What to change, when a solver's failure stopped the run (the CLI words
+  /// it after the status: cli/support/failure_advice.hpp, run_status).
+  FailureAdvice status_advice;
   double dt = 0.0;
   double omega_max = 0.0;               ///< of the integrated model [rad/s]
   double critical_dt = 0.0;             ///< 2 / omega_max [s]

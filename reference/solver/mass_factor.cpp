@@ -16,9 +16,9 @@ namespace {
 
 /// What to change (issue 13, class 8): the paper's case checks its M when it
 /// loads, a component's M may be singular (a consistent C3D15 mass).
-const std::string kMassRemedy =
-    "; a full-order run needs M positive definite (the paper's case checks it when it loads): "
-    "for a component set component.mass to \"lumped\" (HRZ) or run a reduced --method";
+const std::string kMassWhy =
+    "; a full-order run needs M positive definite (the paper's case checks it when it loads)";
+const FailureAdvice kMassAdvice = remedied_by({Remedy::component_lumped_mass_or_reduced_method});
 
 /// The level of each column of L (CHOLMOD's simplicial LDL^T, AMD order):
 /// 0 for a column no other precedes (l_jk = 0 for all k < j), else one more
@@ -86,7 +86,8 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
       c.factor->is_ll || c.factor->is_super)
     throw MassFactorError(
         "the mass matrix is not positive definite (CHOLMOD factorization failed, status " +
-        std::to_string(c.common.status) + ")" + kMassRemedy);
+            std::to_string(c.common.status) + ")" + kMassWhy,
+        kMassAdvice);
   // Simplicial LDL^T: D_jj is the first entry of column j (AMD order), then L's.
   const cholmod_factor& f = *c.factor;
   const auto* p = static_cast<const int*>(f.p);
@@ -97,8 +98,9 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   for (int j = 0; j < n; ++j)
     if (!(x[p[j]] > 0.0))
       throw MassFactorError("the mass matrix is not positive definite (LDL^T pivot " +
-                            std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) + ")" +
-                            kMassRemedy);
+                                std::to_string(x[p[j]]) + " at dof " + std::to_string(perm[j]) +
+                                ")" + kMassWhy,
+                            kMassAdvice);
 
   // P: AMD, then the columns sorted by component and level (ties kept in
   // AMD order), so that each component is a contiguous block.

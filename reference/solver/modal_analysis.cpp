@@ -31,13 +31,10 @@ namespace {
 // What to change, for the messages of ModalError (issue 13, class 8). The
 // paper's case checks K and M of its parts when it loads (exit 2 naming the
 // keys), so these are mostly about a component's imported matrices.
-const std::string kMassRemedy =
-    "; the modes need M positive semi-definite: correct the component's mass (component.source) "
-    "or set component.mass to \"lumped\" (HRZ)";
+const std::string kMassWhy = "; the modes need M positive semi-definite";
 /// omega_max (the explicit integrators' stability limit) needs M^-1.
-const std::string kOmegaMaxRemedy =
-    "; omega_max needs M positive definite: correct the component's mass (component.source) or "
-    "set component.mass to \"lumped\" (HRZ)";
+const std::string kOmegaMaxWhy = "; omega_max needs M positive definite";
+const FailureAdvice kMassAdvice = remedied_by({Remedy::corrected_or_lumped_mass});
 const std::string kStiffnessRemedy =
     "; support the part against rigid motions (a clamped boundary in component.source) or make "
     "it less slender (thicker sections, fewer elements)";
@@ -174,8 +171,8 @@ Modes dense_shift_invert(const Eigen::SparseMatrix<double>& stiffness,
     std::ostringstream message;
     message << "modal analysis: the mass matrix is not positive definite, nor semi-definite: the "
                "pencil (M, K - sigma M) has the eigenvalue "
-            << mu(0) << " < -n eps mu_max = " << -floor << kMassRemedy;
-    throw ModalError(message.str());
+            << mu(0) << " < -n eps mu_max = " << -floor << kMassWhy;
+    throw ModalError(message.str(), kMassAdvice);
   }
   int finite = 0; // mu above the solver's resolution: finite eigenvalues lambda
   for (int i = 0; i < r; ++i)
@@ -354,7 +351,8 @@ SparseOutcome block_modes(const Eigen::SparseMatrix<double>& stiffness,
     return SparseOutcome::singular;
   case Status::mass_not_semidefinite:
     throw ModalError("modal analysis: the mass matrix is not positive semi-definite (" +
-                     result.message + ")" + kMassRemedy);
+                         result.message + ")" + kMassWhy,
+                     kMassAdvice);
   case Status::not_converged:
     return SparseOutcome::not_converged;
   case Status::failed:
@@ -721,7 +719,8 @@ double max_angular_frequency(const Eigen::SparseMatrix<double>& stiffness,
   const double largest = sparse_largest_eigenvalue(stiffness, mass, why);
   if (!std::isfinite(largest))
     throw ModalError("modal analysis: the mass matrix is not positive definite (" + why + ")" +
-                     kOmegaMaxRemedy);
+                         kOmegaMaxWhy,
+                     kMassAdvice);
   return std::sqrt(std::max(largest, 0.0));
 }
 

@@ -163,8 +163,12 @@ public:
   /// only (it costs a product with M). Returns false when the run must stop.
   bool after_step(const StepReport& report, const StepState& state,
                   const std::function<double()>& energy);
-  /// Stops the run with `status` (a solver's failure the run reports).
-  void stop_with(const std::string& status) { stop(status); }
+  /// Stops the run with `status` (a solver's failure the run reports) and
+  /// the failure's `advice`.
+  void stop_with(const std::string& status, const FailureAdvice& advice) {
+    stop(status);
+    m_result.summary.status_advice = advice;
+  }
   /// Whether after_step() will read StepState::casing for this report (the
   /// first step with a contact, the paper's kind), so a solver need not
   /// gather it otherwise.

@@ -5,14 +5,15 @@
 #include <string>
 
 #include "component_history_file.hpp"
+#include "failure_advice.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
-#include "rubbing_run.hpp"
 #include "output_sets.hpp"
+#include "rubbing_run.hpp"
 #include "run_outputs.hpp"
 #include "simulate_options.hpp"
-#include "terminal_progress.hpp"
 #include "staged_output.hpp"
+#include "terminal_progress.hpp"
 #include "usage_error.hpp"
 
 namespace rsi {
@@ -61,7 +62,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
               "revolution)\n",
               s.omega_max, s.critical_dt, s.dt, result.steps_per_sample,
               model.setup().steps_per_revolution);
-  std::printf("status: %s\n", s.status.c_str());
+  std::printf("status: %s\n", run_status(s).c_str());
   std::printf("max penetration %.3e, min lambda %.3e, max lambda %.3e, max |lambda g| %.3e "
               "(model units)\n",
               s.max_penetration, s.min_lambda, s.max_lambda, s.max_complementarity);
@@ -78,7 +79,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   std::fprintf(stderr,
                "rsi: error: numerical failure: the run stopped: %s; %s (--out %s holds "
                "the run up to the stop)\n",
-               s.status.c_str(),
+               run_status(s).c_str(),
                s.dt >= s.critical_dt
                    ? "the step is at or above the stability limit (--force): drop --force"
                    : "use a smaller rubbing.step_safety or rubbing.friction_coefficient",

@@ -237,7 +237,7 @@ int SimulateCommand::simulate(const Case& c, StagedOutput& output) const {
               s.steps, s.steps_requested, s.wall_seconds, s.integration_seconds);
   std::printf("omega_max %.6e rad/s, critical step %.6e s, step %.3e s\n", s.omega_max,
               s.critical_dt, s.dt);
-  std::printf("status: %s\n", s.status.c_str());
+  std::printf("status: %s\n", run_status(s).c_str());
   std::printf(
       "max penetration %.3e m, min lambda %.3e N, max lambda %.3e N, max |lambda g| %.3e N m, "
       "sliding reversals %d\n",
@@ -261,7 +261,7 @@ int SimulateCommand::simulate(const Case& c, StagedOutput& output) const {
   std::fprintf(stderr,
                "rsi: error: numerical failure: the run stopped: %s; %s (--out %s holds the run "
                "up to the stop)\n",
-               s.status.c_str(), stopped_run_remedy(s).c_str(), options.out.c_str());
+               run_status(s).c_str(), stopped_run_remedy(s).c_str(), options.out.c_str());
   return 3;
 }
 
