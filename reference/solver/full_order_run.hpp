@@ -70,8 +70,8 @@ struct RunPoint {
 };
 
 /// The relative tolerance of a rubbing run's energy balance (rigid casing,
-/// per_revolution): round-off of the central-difference balance over the
-/// run's steps, far below any physical term.
+/// per_revolution), of its scale (docs/decisions.md, "Monitors"): the value
+/// the component runs have been held to since they were written.
 constexpr double rubbing_balance_tolerance = 1e-8;
 
 /// The full-order run of any problem, by its step rule:
