@@ -184,7 +184,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   gap.width = setup.gap_width;
   const RigidCasing casing =
       rigid_casing_of(model.component(), model.contact_nodes(), gap, omega,
-                      setup.sliding_against_rotation ? -omega : omega);
+                      model.problem.contact.sliding_speed_at(omega));
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
   if (model.component_case().damping.modal_ratio > 0.0)

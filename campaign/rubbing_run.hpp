@@ -20,7 +20,6 @@
 // balance with u_B^n (component_integrator.hpp). Both are the contact force
 // at t_n to first order in dt.
 
-#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -45,7 +44,6 @@ struct RubbingModel {
   int response_dof() const { return problem.outputs.response_dof; }
   /// "u_NODE_DIR", the history column.
   const std::string& response_name() const { return problem.outputs.response_name; }
-  double period() const { return 2.0 * M_PI / std::abs(setup().rotation_speed); } ///< T [s]
 };
 
 /// The component and its rubbing set-up. Throws CaseError (no "rubbing"
