@@ -15,6 +15,7 @@
 #include "modes_table.hpp"
 #include "output_files.hpp"
 #include "output_sets.hpp"
+#include "rotating_component.hpp"
 #include "staged_output.hpp"
 #include "terminal_progress.hpp"
 
@@ -25,6 +26,7 @@ struct ModesOptions {
   std::string case_path;
   std::string part;  ///< empty: the bladed disk, or the component of a component case
   int count = 50;
+  double speed = 0.0; ///< Omega [rad/s]: K(Omega) of a component case
   std::string out = "out/modes";
   ComponentLoadOptions load;
 };
@@ -50,6 +52,11 @@ ModesCommand::ModesCommand(CLI::App& app)
   m_command.add_option("--count", modes.count, "number of modes, 1..number of dofs")
       ->capture_default_str()
       ->check(integer_in(1, 1000000000, "an integer in [1, the part's number of dofs]"));
+  m_command.add_option("--speed", modes.speed,
+                       "rotation speed Omega [rad/s] of a component case: the modes of its "
+                       "prestressed K(Omega) (ccx: centrifugal static step, then perturbation), "
+                       "|Omega| < 1e5")
+      ->check(number_between(-1e5, 1e5, "a speed in rad/s, |Omega| < 1e5"));
   m_command.add_option("--out", modes.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
@@ -101,6 +108,31 @@ void print_accuracy(const Modes& modes) {
                 a.n_zero);
 }
 
+/// The speed of a rotating component's K(Omega) and its operating point:
+/// the largest static deflection and the boundary nodes' radial growth.
+void print_rotation(const ComponentInput& input) {
+  const Component& c = input.component;
+  int largest = 0;
+  for (int i = 0; i < c.n_dofs(); ++i)
+    if (std::abs(input.deflection(i)) > std::abs(input.deflection(largest))) largest = i;
+  std::printf("\nrotation speed %.6g rad/s (%.6g rpm): K(Omega) from ccx's perturbation step after "
+              "its nonlinear static step under the centrifugal load; largest static deflection "
+              "%.6e (node %d, %s)",
+              input.speed, input.speed * 30.0 / M_PI, input.deflection(largest),
+              c.dofs[largest].node, c.dofs[largest].kind.c_str());
+  std::vector<int> nodes;
+  for (int i : c.boundary)
+    if (nodes.empty() || nodes.back() != c.dofs[i].node) nodes.push_back(c.dofs[i].node);
+  if (nodes.empty()) return;
+  double low = INFINITY, high = -INFINITY;
+  for (int node : nodes) {
+    const double g = radial_growth(c, input.deflection, node);
+    low = std::min(low, g);
+    high = std::max(high, g);
+  }
+  std::printf("; radial growth of the %zu boundary nodes %.6e to %.6e", nodes.size(), low, high);
+}
+
 } // namespace
 
 int ModesCommand::run(StagedOutput& output) {
@@ -108,7 +140,7 @@ int ModesCommand::run(StagedOutput& output) {
   const auto start = std::chrono::steady_clock::now();
   TerminalStage stage("modes: loading " + options.case_path + " and solving for " +
                       std::to_string(options.count) + " modes");
-  const ComponentInput input = load_component_input(options.case_path, options.part, options.load);
+  const ComponentInput input = load_component_input(options.case_path, options.part, options.load, options.speed);
   const auto loaded = std::chrono::steady_clock::now();
   const ModesTable table = modes_table(input, options.count);
   const auto solved = std::chrono::steady_clock::now();
@@ -130,6 +162,7 @@ int ModesCommand::run(StagedOutput& output) {
     std::printf("omega_max = inf: M is singular (massless directions, infinite eigenvalues); "
                 "central differences cannot integrate the full model");
   if (input.case_time_step > 0.0) std::printf(" (case step %.3e s)", input.case_time_step);
+  if (input.speed != 0.0) print_rotation(input);
   std::printf("\nload %.2f s, %d modes %.2f s, peak memory %.0f MB\n", seconds(start, loaded),
               modes.n_modes(), seconds(loaded, solved), peak_memory_bytes() / 1048576.0);
   print_accuracy(modes);

@@ -38,6 +38,19 @@ CLI::Validator number_above(double lo, const std::string& allowed) {
       "NUMBER");
 }
 
+CLI::Validator number_between(double lo, double hi, const std::string& allowed) {
+  return CLI::Validator(
+      [lo, hi, allowed](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > lo) ||
+            !(value < hi))
+          return "must be " + allowed + ", got '" + text + "'";
+        return {};
+      },
+      "NUMBER");
+}
+
 CLI::Validator one_of(const std::vector<std::string>& names) {
   std::string allowed;
   for (size_t i = 0; i < names.size(); ++i)

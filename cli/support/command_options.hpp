@@ -22,6 +22,9 @@ CLI::Validator integer_in(long lo, long hi, const std::string& allowed);
 /// A finite number above `lo`.
 CLI::Validator number_above(double lo, const std::string& allowed);
 
+/// A finite number strictly between `lo` and `hi`.
+CLI::Validator number_between(double lo, double hi, const std::string& allowed);
+
 /// One of `names`.
 CLI::Validator one_of(const std::vector<std::string>& names);
 

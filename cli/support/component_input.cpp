@@ -13,11 +13,13 @@
 #include "usage_error.hpp"
 #include "nodal_diameter.hpp"
 #include "paper_components.hpp"
+#include "rotating_component.hpp"
 
 namespace rsi {
 
 ComponentInput load_component_input(const std::string& case_path, const std::string& part,
-                                    const ComponentLoadOptions& load) {
+                                    const ComponentLoadOptions& load, double speed,
+                                    const std::string& speed_option) {
   const nlohmann::json document = read_case_document(case_path);
   ComponentInput input;
   input.case_source = case_path;
@@ -26,9 +28,19 @@ ComponentInput load_component_input(const std::string& case_path, const std::str
     if (!part.empty() && part != input.component_case->name)
       throw UsageError("--part: the case " + case_path + " has one component, '" +
                        input.component_case->name + "', got '" + part + "'");
-    input.component = load_component(*input.component_case, load);
+    if (speed == 0.0) {
+      input.component = load_component(*input.component_case, load);
+      return input;
+    }
+    RotatingComponent rotating = rotating_component(*input.component_case, load, speed);
+    input.component = std::move(rotating.component);
+    input.speed = speed;
+    input.deflection = std::move(rotating.deflection);
     return input;
   }
+  if (speed != 0.0)
+    throw UsageError(speed_option + ": rotation effects are for a component case (a CalculiX "
+                     "deck or the gmsh blade); " + case_path + " is the paper's 2D case");
   if (!load.source_override.empty())
     throw UsageError("--source: only for a component case (a CalculiX deck or Matrix Market "
                      "folder); " + case_path + " is the paper's case");

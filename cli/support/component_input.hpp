@@ -23,13 +23,18 @@ struct ComponentInput {
   std::function<std::optional<int>(const Eigen::VectorXd&)> diameter;
   double case_time_step = 0.0;          ///< the paper's case only (0 otherwise)
   std::optional<ComponentCase> component_case; ///< set for a component case
+  double speed = 0.0;          ///< Omega [rad/s] of the component's K(Omega)
+  Eigen::VectorXd deflection;  ///< its static centrifugal deflection (empty at rest)
 };
 
 /// `part`: "bladed-disk" or "casing" for the paper's case; for a component
-/// case empty or the component's name. Throws CaseError, UsageError or
-/// ImportError (exit 2).
+/// case empty or the component's name. `speed` != 0: the component case's
+/// component at that rotation speed (rotating_component.hpp; `speed_option`
+/// names it in the message refusing the paper's case). Throws CaseError,
+/// UsageError or ImportError (exit 2).
 ComponentInput load_component_input(const std::string& case_path, const std::string& part,
-                                    const ComponentLoadOptions& load);
+                                    const ComponentLoadOptions& load, double speed = 0.0,
+                                    const std::string& speed_option = "--speed");
 
 /// Every structure of the case, in the order of its problem (problem.hpp):
 /// the paper's bladed disk and casing, or the component. Throws as

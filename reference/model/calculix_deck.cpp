@@ -324,6 +324,9 @@ CalculixDeck read_calculix_deck(const std::string& path) {
     if (is_element_keyword(line.text.upper) && fields)
       if (const std::optional<std::string> type = parameter(*fields, "TYPE"))
         note(deck.element_types, *type, line.where);
+    if (fields && (name == "SOLIDSECTION" || name == "SHELLSECTION" || name == "BEAMSECTION"))
+      if (const std::optional<std::string> elset = parameter(*fields, "ELSET"))
+        note(deck.section_elsets, *elset, line.where);
   }
 
   // ccx reads every *NODE block before any *NSET (keystart.f).

@@ -64,6 +64,10 @@ struct CalculixDeck {
   std::map<std::string, std::vector<int>> dropped_ids;
   std::vector<DeckKeyword> keywords;             ///< each keyword once, first appearance first
   std::vector<DeckKeyword> element_types;        ///< each *ELEMENT TYPE= once (name = the type)
+  /// The ELSET= of each *SOLID SECTION, *SHELL SECTION and *BEAM SECTION,
+  /// once each (upper case): the elements that carry a material and so a
+  /// mass, which a centrifugal load (*DLOAD ... CENTRIF) must name.
+  std::vector<DeckKeyword> section_elsets;
 };
 
 CalculixDeck read_calculix_deck(const std::string& path);

@@ -1,6 +1,8 @@
 #include "calculix_run.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -215,6 +217,94 @@ std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache
   const fs::path entry = cached_run(deck, step, "matrices", {"job.sti", "job.mas", "job.dof"},
                                     cache_dir, incomplete_matrices, cache_name);
   return (entry / "job").string();
+}
+
+namespace {
+
+/// The model-part set of every node (ids need not all be nodes: ccx takes
+/// a GENERATE range as it is) and the nonlinear static step under the
+/// centrifugal load, printing every node's displacement.
+std::string prestress_steps(const CalculixDeck& deck, const CentrifugalLoad& load) {
+  if (deck.section_elsets.empty())
+    throw ImportError(deck.path + ": no *SOLID SECTION (or shell or beam section) names an "
+                      "element set: nothing carries a centrifugal load");
+  if (!std::isfinite(load.omega) || !load.point.allFinite() || !load.axis.allFinite() ||
+      std::abs(load.axis.norm() - 1.0) > 1e-12)
+    throw ImportError("calculix_prestressed: the speed, axis point and unit axis must be finite");
+  char number[64];
+  const auto g = [&number](double v) {
+    std::snprintf(number, sizeof number, "%.17g", v);
+    return std::string(number);
+  };
+  std::string text = "*NSET, NSET=RSI_ALL_NODES, GENERATE\n1, " +
+                     std::to_string(std::max(deck.largest_node_id, 1)) +
+                     "\n*STEP, NLGEOM\n*STATIC\n*DLOAD\n";
+  for (const DeckKeyword& elset : deck.section_elsets)
+    text += elset.name + ", CENTRIF, " + g(load.omega * load.omega) + ", " + g(load.point.x()) +
+            ", " + g(load.point.y()) + ", " + g(load.point.z()) + ", " + g(load.axis.x()) + ", " +
+            g(load.axis.y()) + ", " + g(load.axis.z()) + "\n";
+  return text + "*NODE PRINT, NSET=RSI_ALL_NODES\nU\n*END STEP\n*STEP, PERTURBATION\n";
+}
+
+} // namespace
+
+std::string calculix_prestressed_matrices(const CalculixDeck& deck, const CentrifugalLoad& load,
+                                          const std::string& cache_dir,
+                                          const std::string& cache_name) {
+  const std::string step =
+      prestress_steps(deck, load) + "*FREQUENCY, SOLVER=MATRIXSTORAGE\n*END STEP\n";
+  const fs::path entry =
+      cached_run(deck, step, "prestressed", {"job.sti", "job.mas", "job.dof", "job.dat"},
+                 cache_dir, incomplete_matrices, cache_name);
+  return (entry / "job").string();
+}
+
+std::vector<double> calculix_prestressed_eigenvalues(const CalculixDeck& deck,
+                                                     const CentrifugalLoad& load, int count,
+                                                     const std::string& cache_dir) {
+  if (count < 1) throw ImportError("calculix_prestressed_eigenvalues: count must be >= 1");
+  const std::string step =
+      prestress_steps(deck, load) + "*FREQUENCY\n" + std::to_string(count) + "\n*END STEP\n";
+  const fs::path entry = cached_run(deck, step, "prestressed-modes" + std::to_string(count),
+                                    {"job.dat"}, cache_dir);
+  std::vector<double> values = read_calculix_eigenvalues((entry / "job.dat").string());
+  if (static_cast<int>(values.size()) < count)
+    throw ImportError((entry / "job.dat").string() + ": ccx found " +
+                      std::to_string(values.size()) + " eigenvalues, " + std::to_string(count) +
+                      " were asked");
+  values.resize(count);
+  return values;
+}
+
+std::map<int, Eigen::Vector3d> read_calculix_displacements(const std::string& dat_path) {
+  std::ifstream in(dat_path);
+  if (!in) throw ImportError(dat_path + ": cannot open");
+  // ccx prints the table after every increment of the step: the last one is
+  // the converged state at the step's end.
+  std::vector<std::string> lines;
+  size_t table = std::string::npos;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("displacements (vx,vy,vz)") != std::string::npos) table = lines.size();
+    lines.push_back(line);
+  }
+  if (table == std::string::npos)
+    throw ImportError(dat_path + ": no displacement table (*NODE PRINT, U)");
+  std::map<int, Eigen::Vector3d> u;
+  for (size_t k = table + 1; k < lines.size(); ++k) {
+    std::istringstream fields(lines[k]);
+    int node = 0;
+    Eigen::Vector3d x;
+    if (fields >> node >> x.x() >> x.y() >> x.z()) {
+      if (!x.allFinite())
+        throw ImportError(dat_path + ": displacement of node " + std::to_string(node) +
+                          " is not finite (ccx's static step diverged)");
+      u[node] = x;
+    } else if (!u.empty() && lines[k].find_first_not_of(" \t\r") != std::string::npos) {
+      break;
+    }
+  }
+  if (u.empty()) throw ImportError(dat_path + ": the displacement table is empty");
+  return u;
 }
 
 std::vector<double> calculix_eigenvalues(const CalculixDeck& deck, int count,

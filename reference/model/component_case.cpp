@@ -551,7 +551,10 @@ const std::string& ComponentLoadOptions::ccx_cache_named() const {
   return ccx_cache_name.empty() ? unnamed : ccx_cache_name;
 }
 
-Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
+ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions& options) {
+  if (c.source == ComponentSource::matrix_market)
+    throw CaseError(c.case_path + ": key 'component.source.matrix_market': the component is "
+                    "a Matrix Market folder, not a CalculiX deck");
   // The source override replaces the case's deck or folder, and nothing else: a case
   // whose model is more than that one path is refused, never half replaced.
   if (!options.source_override.empty() && !c.calculix_matrices.empty())
@@ -573,43 +576,53 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                     " replaces a calculix_deck or matrix_market source only; write a case whose "
                     "calculix_deck names that deck (with its boundary) instead");
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
+  if (c.source == ComponentSource::gmsh_blade && options.source_override.empty())
+    source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
+  if (!std::filesystem::is_regular_file(source))
+    throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
+                      "' is not a file (the deck; " + options.source_named() + " overrides it)");
+  const CalculixDeck deck = read_calculix_deck(source);
+  check_calculix_features(deck);
+  std::vector<int> boundary = c.boundary_nodes;
+  if (!c.boundary_node_set.empty()) {
+    const auto set = deck.nsets.find(c.boundary_node_set);
+    if (set == deck.nsets.end())
+      throw ImportError(c.case_path + ": key 'component.boundary.node_set': the deck " + source +
+                        " has no *NSET named " + c.boundary_node_set);
+    boundary = set->second;
+    const auto dropped = deck.dropped_ids.find(c.boundary_node_set);
+    if (dropped != deck.dropped_ids.end())
+      throw ImportError(c.case_path + ": key 'component.boundary.node_set': the *NSET " +
+                        c.boundary_node_set + " of " + source + " lists node " +
+                        std::to_string(dropped->second.front()) +
+                        ", above the deck's largest node id " +
+                        std::to_string(deck.largest_node_id) +
+                        ": ccx drops it (with a warning), so the set would lose it; define the "
+                        "node or remove it from the set");
+  }
+  for (int id : boundary)
+    if (!std::binary_search(deck.nodes.begin(), deck.nodes.end(), id,
+                            [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
+      throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
+                        std::to_string(id) + " is not a node of the deck " + source);
+  return {source, deck, boundary};
+}
+
+Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
   Component component;
   if (c.source == ComponentSource::matrix_market) {
+    const std::string source =
+        options.source_override.empty() ? c.source_path : options.source_override;
     if (!std::filesystem::is_directory(source))
       throw ImportError(c.case_path + ": key 'component.source.matrix_market': '" + source +
                         "' is not a folder");
     component = read_matrix_market_component(
         source, c.name, c.boundary_from_dofs ? nullptr : &c.boundary_nodes);
   } else {
-    if (c.source == ComponentSource::gmsh_blade && options.source_override.empty())
-      source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
-    if (!std::filesystem::is_regular_file(source))
-      throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
-                        "' is not a file (the deck; " + options.source_named() + " overrides it)");
-    const CalculixDeck deck = read_calculix_deck(source);
-    check_calculix_features(deck);
-    std::vector<int> boundary = c.boundary_nodes;
-    if (!c.boundary_node_set.empty()) {
-      const auto set = deck.nsets.find(c.boundary_node_set);
-      if (set == deck.nsets.end())
-        throw ImportError(c.case_path + ": key 'component.boundary.node_set': the deck " + source +
-                          " has no *NSET named " + c.boundary_node_set);
-      boundary = set->second;
-      const auto dropped = deck.dropped_ids.find(c.boundary_node_set);
-      if (dropped != deck.dropped_ids.end())
-        throw ImportError(c.case_path + ": key 'component.boundary.node_set': the *NSET " +
-                          c.boundary_node_set + " of " + source + " lists node " +
-                          std::to_string(dropped->second.front()) +
-                          ", above the deck's largest node id " +
-                          std::to_string(deck.largest_node_id) +
-                          ": ccx drops it (with a warning), so the set would lose it; define the "
-                          "node or remove it from the set");
-    }
-    for (int id : boundary)
-      if (!std::binary_search(deck.nodes.begin(), deck.nodes.end(), id,
-                              [](const auto& a, const auto& b) { return node_id(a) < node_id(b); }))
-        throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
-                          std::to_string(id) + " is not a node of the deck " + source);
+    const ComponentDeck model = component_deck(c, options);
+    const CalculixDeck& deck = model.deck;
+    const std::string& source = model.source;
+    const std::vector<int>& boundary = model.boundary;
     const bool ran_ccx = c.calculix_matrices.empty();
     std::string job = c.calculix_matrices;
     if (ran_ccx) {

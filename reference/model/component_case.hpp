@@ -37,6 +37,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json_fwd.hpp>
 
+#include "calculix_deck.hpp"
 #include "case_file.hpp"
 #include "component.hpp"
 #include "gmsh_blade.hpp"
@@ -143,6 +144,17 @@ struct ComponentLoadOptions {
   const std::string& source_named() const;
   const std::string& ccx_cache_named() const;
 };
+
+/// The CalculiX deck of a component (its `calculix_deck`, the override, or
+/// the gmsh blade meshed into the cache) and its boundary nodes, checked
+/// against the deck. Throws CaseError for a Matrix Market component,
+/// ImportError as load_component does.
+struct ComponentDeck {
+  std::string source;        ///< the deck's path
+  CalculixDeck deck;
+  std::vector<int> boundary; ///< node ids
+};
+ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions& options);
 
 /// Builds the component: runs ccx (cached) on a deck, or reads a folder.
 /// Throws ImportError (bad files, missing ccx) or CaseError.
