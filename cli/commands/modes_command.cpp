@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -15,6 +16,9 @@
 #include "modes_table.hpp"
 #include "output_files.hpp"
 #include "output_sets.hpp"
+#include "campbell_crossings.hpp"
+#include "speeds_option.hpp"
+#include "usage_error.hpp"
 #include "rotating_component.hpp"
 #include "staged_output.hpp"
 #include "terminal_progress.hpp"
@@ -27,6 +31,7 @@ struct ModesOptions {
   std::string part;  ///< empty: the bladed disk, or the component of a component case
   int count = 50;
   double speed = 0.0; ///< Omega [rad/s]: K(Omega) of a component case
+  std::string speeds; ///< a Campbell diagram over these speeds (speeds_option.hpp)
   std::string out = "out/modes";
   ComponentLoadOptions load;
 };
@@ -37,6 +42,8 @@ public:
   int run(StagedOutput& output) override;
 
 private:
+  int run_campbell(StagedOutput& output);
+
   ModesOptions m_options;
 };
 
@@ -57,6 +64,13 @@ ModesCommand::ModesCommand(CLI::App& app)
                        "prestressed K(Omega) (ccx: centrifugal static step, then perturbation), "
                        "|Omega| < 1e5")
       ->check(number_between(-1e5, 1e5, "a speed in rad/s, |Omega| < 1e5"));
+  m_command
+      .add_option("--speeds", modes.speeds,
+                  "a Campbell diagram of a component case instead: the --count lowest "
+                  "frequencies of K(Omega) at each speed, FROM:TO:COUNT or W1,W2,... [rad/s], "
+                  "ascending, at least two, in [0, 100000) -> DIR/campbell.csv and the engine "
+                  "orders 1-10's crossings DIR/crossings.csv")
+      ->excludes("--speed");
   m_command.add_option("--out", modes.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
@@ -135,8 +149,70 @@ void print_rotation(const ComponentInput& input) {
 
 } // namespace
 
+int ModesCommand::run_campbell(StagedOutput& output) {
+  const ModesOptions& options = m_options;
+  const std::vector<double> speeds = parse_speeds_option(options.speeds, SpeedSign::non_negative);
+  if (speeds.size() < 2)
+    throw UsageError("--speeds: a Campbell diagram needs at least two speeds, got '" +
+                     options.speeds + "'");
+  for (size_t s = 1; s < speeds.size(); ++s)
+    if (!(speeds[s] > speeds[s - 1]))
+      throw UsageError("--speeds: the speeds must ascend, got '" + options.speeds + "'");
+  const auto start = std::chrono::steady_clock::now();
+  Eigen::MatrixXd hz(speeds.size(), options.count);
+  std::string name;
+  for (size_t s = 0; s < speeds.size(); ++s) {
+    TerminalStage stage("modes: " + std::to_string(options.count) + " modes at " +
+                        std::to_string(speeds[s]) + " rad/s (" + std::to_string(s + 1) + " of " +
+                        std::to_string(speeds.size()) + ")");
+    const ComponentInput input =
+        load_component_input(options.case_path, options.part, options.load, speeds[s], "--speeds");
+    if (!input.component_case)
+      throw UsageError("--speeds: a Campbell diagram is for a component case (a CalculiX deck or "
+                       "the gmsh blade); " + options.case_path + " is the paper's 2D case");
+    const ModesTable table = modes_table(input, options.count);
+    for (int i = 0; i < options.count; ++i) hz(s, i) = table.modes.frequency_hz(i);
+    name = input.component.name;
+    stage.done();
+  }
+  const int max_order = 10;
+  const std::vector<CampbellCrossing> crossings = campbell_crossings(speeds, hz, max_order);
+  std::ostringstream campbell;
+  campbell.precision(17);
+  campbell << "speed_rad_s,mode,frequency_hz\n";
+  for (size_t s = 0; s < speeds.size(); ++s)
+    for (int i = 0; i < options.count; ++i)
+      campbell << speeds[s] << "," << i + 1 << "," << hz(s, i) << "\n";
+  std::ostringstream table;
+  table.precision(17);
+  table << "mode,engine_order,speed_rad_s,frequency_hz\n";
+  for (const CampbellCrossing& c : crossings)
+    table << c.mode << "," << c.engine_order << "," << c.speed_rad_s << "," << c.frequency_hz
+          << "\n";
+  const std::string dir = output.open(options.out, "--out", campbell_output_set());
+  write_text_file(dir + "/campbell.csv", campbell.str());
+  write_text_file(dir + "/crossings.csv", table.str());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: %s, %d modes at %zu speeds from %g to %g rad/s in %.1f s (K(Omega) from ccx "
+              "at each speed, cached)\n",
+              options.case_path.c_str(), name.c_str(), options.count, speeds.size(),
+              speeds.front(), speeds.back(), seconds);
+  std::printf("%6s %8s %10s %10s  engine-order crossings (mode i = the i-th lowest frequency at "
+              "each speed; located by linear interpolation between grid speeds)\n",
+              "mode", "order", "rad/s", "Hz");
+  for (const CampbellCrossing& c : crossings)
+    if (c.mode <= 3)
+      std::printf("%6d %8d %10.1f %10.2f\n", c.mode, c.engine_order, c.speed_rad_s,
+                  c.frequency_hz);
+  output.announce("wrote " + options.out + "/campbell.csv and " + options.out +
+                  "/crossings.csv (" + std::to_string(crossings.size()) + " crossings)\n");
+  return 0;
+}
+
 int ModesCommand::run(StagedOutput& output) {
   const ModesOptions& options = m_options;
+  if (!options.speeds.empty()) return run_campbell(output);
   const auto start = std::chrono::steady_clock::now();
   TerminalStage stage("modes: loading " + options.case_path + " and solving for " +
                       std::to_string(options.count) + " modes");

@@ -6,6 +6,10 @@ OutputSet modes_output_set() {
   return {"modes.csv"};
 }
 
+OutputSet campbell_output_set() {
+  return {"campbell.csv", "crossings.csv"};
+}
+
 OutputSet export_output_set() {
   // One folder per component, named by the case (bladed-disk, casing, or
   // the component's name): the four files in any folder, the folder

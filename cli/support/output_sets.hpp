@@ -21,6 +21,7 @@ namespace rsi {
 using OutputSet = std::vector<std::string>;
 
 OutputSet modes_output_set();
+OutputSet campbell_output_set(); ///< rsi modes --speeds
 OutputSet export_output_set();
 OutputSet reduce_output_set();
 OutputSet simulate_output_set();

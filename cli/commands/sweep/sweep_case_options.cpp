@@ -11,7 +11,7 @@
 #include "paper_sweep_points.hpp"
 #include "run_list_checks.hpp"
 #include "run_monitor.hpp"
-#include "sweep_speeds_option.hpp"
+#include "speeds_option.hpp"
 #include "usage_error.hpp"
 
 namespace rsi {

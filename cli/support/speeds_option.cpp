@@ -1,4 +1,4 @@
-#include "sweep_speeds_option.hpp"
+#include "speeds_option.hpp"
 
 #include <cmath>
 #include <cstdlib>

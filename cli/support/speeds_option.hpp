@@ -1,5 +1,5 @@
 #pragma once
-// --speeds of rsi sweep: "FROM:TO:COUNT" (COUNT equally spaced speeds, both
+// --speeds of rsi sweep and rsi modes: "FROM:TO:COUNT" (COUNT equally spaced speeds, both
 // ends, the case file's formula) or "W1,W2,..." [rad/s], 1 to 100000 speeds.
 
 #include <string>
