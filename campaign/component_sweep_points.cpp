@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "case_file.hpp"
 #include "failure_advice.hpp"
 #include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
@@ -225,6 +226,13 @@ private:
 
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
                                                     const std::string& where) {
+  if (model.component_case().rotation_effects)
+    throw CaseError(model.problem.source +
+                    ": key 'component.rotation_effects': a sweep builds one model for every "
+                    "speed, and rotation effects need the blade's K(Omega) and tip growth at "
+                    "each speed (one ccx run a speed), which rsi sweep does not build yet: run "
+                    "rsi simulate at each speed, or set rotation_effects to false for a map of "
+                    "the blade at rest");
   std::vector<PreparedRun> runs(sweep.runs.size());
   for (size_t j = 0; j < runs.size(); ++j) {
     PreparedRun& r = runs[j];

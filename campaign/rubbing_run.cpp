@@ -182,9 +182,14 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   gap.kind = setup.oval_gap ? CasingGapKind::oval : CasingGapKind::constant;
   gap.g0 = setup.gap;
   gap.width = setup.gap_width;
+  const std::vector<double>& growth = model.problem.casing.tip_growth;
+  if (!growth.empty() && omega != model.problem.contact.rotation_speed)
+    throw std::invalid_argument(model.problem.source +
+                                ": with rotation effects the model holds K(Omega) at the case's "
+                                "speed only");
   const RigidCasing casing =
       rigid_casing_of(model.component(), model.contact_nodes(), gap, omega,
-                      model.problem.contact.sliding_speed_at(omega));
+                      model.problem.contact.sliding_speed_at(omega), growth);
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
   if (model.component_case().damping.modal_ratio > 0.0)

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -16,8 +17,9 @@ namespace rsi {
 RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                          const std::vector<std::array<int, 3>>& boundary_index,
                          const CasingGap& gap, double omega, double sliding_omega,
-                         const Eigen::Vector3d& axis)
+                         const Eigen::Vector3d& axis, std::vector<double> growth)
     : m_gap(gap)
+    , m_growth(std::move(growth))
     , m_omega(omega)
     , m_sliding_omega(sliding_omega) {
   const std::string where = "RigidCasing: ";
@@ -33,6 +35,13 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
                                 ", allowed a finite value");
   if (!std::isfinite(gap.g0))
     throw std::invalid_argument(where + "gap g0 = " + message_number(gap.g0) + ", allowed finite");
+  if (!m_growth.empty() && m_growth.size() != positions.size())
+    throw std::invalid_argument(where + "growth (" + std::to_string(m_growth.size()) +
+                                ") must have one entry per contact node (" +
+                                std::to_string(positions.size()) + ") or none");
+  for (double g : m_growth)
+    if (!std::isfinite(g))
+      throw std::invalid_argument(where + "gap growth " + message_number(g) + ", allowed finite");
   if (gap.kind == CasingGapKind::linear && !std::isfinite(gap.rate))
     throw std::invalid_argument(where + "gap rate = " + message_number(gap.rate) +
                                 ", allowed finite");
@@ -90,6 +99,10 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
 }
 
 double RigidCasing::imposed_gap(int c, double t) const {
+  return m_growth.empty() ? shape_gap(c, t) : shape_gap(c, t) - m_growth[c];
+}
+
+double RigidCasing::shape_gap(int c, double t) const {
   switch (m_gap.kind) {
   case CasingGapKind::constant:
     return m_gap.g0;
@@ -108,7 +121,8 @@ double RigidCasing::imposed_gap(int c, double t) const {
 }
 
 RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
-                            const CasingGap& gap, double omega, double sliding_omega) {
+                            const CasingGap& gap, double omega, double sliding_omega,
+                            std::vector<double> growth) {
   const std::string where = "rigid_casing_of: ";
   std::unordered_map<int, int> boundary_slot; // dof -> index in component.boundary
   for (int k = 0; k < static_cast<int>(component.boundary.size()); ++k)
@@ -145,7 +159,8 @@ RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& 
     positions.push_back(node->x);
     index.push_back(slots);
   }
-  return RigidCasing(positions, index, gap, omega, sliding_omega, component.rotation_axis);
+  return RigidCasing(positions, index, gap, omega, sliding_omega, component.rotation_axis,
+                     std::move(growth));
 }
 
 } // namespace rsi

@@ -22,7 +22,9 @@
 // Normal gap. The casing surface lies at g(t) from the undeformed node
 // along -e_n (outward); a displacement u_c of the node moves it by -e_n.u_c
 // towards the casing, so the gap is
-//   g_c(t, u) = g(t, phi_c) + e_n . u_c        (g > 0 open, g < 0 penetration)
+//   g_c(t, u) = g(t, phi_c) - growth_c + e_n . u_c   (g > 0 open, g < 0 penetration)
+// (growth_c: the node's static radial growth under rotation effects, u
+// measured from that deflected state; none without them)
 // and a normal multiplier lambda_n >= 0 acts on the node as the force
 // lambda_n e_n (pushing it inward, which opens the gap: the Signorini sign
 // W_nn > 0 of the per-step problem).
@@ -80,10 +82,13 @@ public:
   /// and nonzero (normalised here). Throws std::invalid_argument for a node
   /// on the axis (r_c = 0), a gap out of range, sizes that do not match, a
   /// zero or non-finite axis, or a repeated or negative boundary index.
+  /// growth: per contact, the static radial growth under rotation effects
+  /// (finite), subtracted from g; empty: none.
   RigidCasing(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
               double omega, double sliding_omega,
-              const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ());
+              const Eigen::Vector3d& axis = Eigen::Vector3d::UnitZ(),
+              std::vector<double> growth = {});
   /// The physical case: Omega_s = Omega.
   RigidCasing(const std::vector<Eigen::Vector3d>& positions,
               const std::vector<std::array<int, 3>>& boundary_index, const CasingGap& gap,
@@ -99,18 +104,21 @@ public:
   double omega() const { return m_omega; }
   double sliding_omega() const { return m_sliding_omega; }
   const CasingGap& gap_law() const { return m_gap; }
-  /// g(t, phi_c) [length].
+  /// g(t, phi_c) - growth_c [length].
   double imposed_gap(int c, double t) const;
   /// The casing's displacement over a step of dt, in c's tangent frame,
   /// negated: the (t1, t2) term added to the node's increment, (0, r_c Omega_s dt).
   double casing_slip(int c, double dt) const { return m_radius[c] * m_sliding_omega * dt; }
 
 private:
+  double shape_gap(int c, double t) const; ///< g(t, phi_c)
+
   std::vector<Eigen::Matrix3d> m_frame;
   std::vector<std::array<int, 3>> m_index;
   std::vector<double> m_radius;
   std::vector<double> m_phi;
   CasingGap m_gap;
+  std::vector<double> m_growth;
   double m_omega = 0.0;
   double m_sliding_omega = 0.0;
 };
@@ -119,9 +127,10 @@ private:
 /// boundary holds their ux, uy, uz (3D solid nodes, CalculiX directions
 /// 1..3), about the component's rotation_axis. Throws std::invalid_argument naming the node when it
 /// has no coordinates, or one of its three translations is not a boundary dof. sliding_omega:
-/// Omega_s of the header (omega in the physical case).
+/// Omega_s of the header (omega in the physical case). growth: as RigidCasing's.
 RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
-                            const CasingGap& gap, double omega, double sliding_omega);
+                            const CasingGap& gap, double omega, double sliding_omega,
+                            std::vector<double> growth = {});
 inline RigidCasing rigid_casing_of(const Component& component, const std::vector<int>& node_ids,
                                    const CasingGap& gap, double omega) {
   return rigid_casing_of(component, node_ids, gap, omega, omega);

@@ -83,6 +83,8 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, co
                                     std::to_string(dof) +
                                     " used twice, allowed: distinct dofs for all nodes");
     }
+    if (!std::isfinite(node.growth))
+      throw std::invalid_argument(where + "node " + std::to_string(c) + " growth must be finite");
     const Eigen::Vector3d& x = node.position;
     if (!x.allFinite())
       throw std::invalid_argument(where + "node " + std::to_string(c) + " position must be finite");
@@ -105,7 +107,7 @@ RigidSurfaceContact::RigidSurfaceContact(std::vector<RigidSurfaceNode> nodes, co
 }
 
 double RigidSurfaceContact::imposed_gap(int contact, double t) const {
-  return m_gap(m_omega * t + m_frames.at(contact).angle);
+  return m_gap(m_omega * t + m_frames.at(contact).angle) - m_nodes[contact].growth;
 }
 
 Eigen::Vector3d RigidSurfaceContact::casing_velocity(int contact) const {

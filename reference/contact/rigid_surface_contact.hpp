@@ -20,7 +20,9 @@
 //            (e_n, e_t1, e_t2) orthonormal and right-handed; e_t2 points
 //            along a counter-clockwise rotation about a. About z:
 //            e_n = -(x, y, 0) / r, e_t1 = (0, 0, 1), phi = atan2(y, x).
-//   gap      g_c(t, u) = g0_c(t) + e_n . u_c        (> 0 open)
+//   gap      g_c(t, u) = g0_c(t) - growth_c + e_n . u_c        (> 0 open)
+//            (growth_c: the node's static radial growth under rotation
+//            effects, u measured from that deflected state; 0 without)
 //            g0 constant, or the oval casing of the README:
 //            g0(t) = g_m (1 - 2 exp(-((mod(theta, pi)/pi - 1/2)/w)^2)),
 //            theta = Omega t + phi, mod the floored modulo (as MATLAB's),
@@ -77,6 +79,9 @@ struct ImposedGap {
 struct RigidSurfaceNode {
   std::array<int, 3> dofs{{-1, -1, -1}};              ///< system indices of ux, uy, uz
   Eigen::Vector3d position = Eigen::Vector3d::Zero(); ///< undeformed X
+  /// Static radial growth at the run's speed (rotation effects): the gap at
+  /// zero displacement is g0(t) - growth; finite.
+  double growth = 0.0;
 };
 
 struct ContactFrame {

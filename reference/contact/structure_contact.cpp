@@ -39,8 +39,16 @@ StructureContact::StructureContact(const Problem& problem, double rotation_speed
     const ImposedGap gap = problem.casing.oval_gap
                                ? ImposedGap::oval(problem.casing.gap, problem.casing.gap_width)
                                : ImposedGap::constant(problem.casing.gap);
+    std::vector<RigidSurfaceNode> nodes = rigid_surface_nodes(rotor, c.contact_nodes);
+    if (!problem.casing.tip_growth.empty()) {
+      if (rotation_speed != c.rotation_speed)
+        throw std::invalid_argument(problem.source +
+                                    ": with rotation effects the model holds K(Omega) at the "
+                                    "case's speed only");
+      for (size_t k = 0; k < nodes.size(); ++k) nodes[k].growth = problem.casing.tip_growth.at(k);
+    }
     auto law = std::make_shared<const RigidSurfaceContact>(
-        rigid_surface_nodes(rotor, c.contact_nodes), gap, rotation_speed, c.friction_coefficient,
+        std::move(nodes), gap, rotation_speed, c.friction_coefficient,
         c.sliding_speed_at(rotation_speed), rotor.rotation_axis);
     m_frictional = law.get();
     m_rigid_surface = law.get();

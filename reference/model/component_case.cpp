@@ -485,6 +485,22 @@ ComponentCase parse_component_case(const json& document, const std::string& path
                                        mass.dump().substr(0, 80));
     c.lumped_mass = mass == "lumped";
   }
+  comp.claim("rotation_effects");
+  if (cj.contains("rotation_effects")) {
+    const json& effects = cj.at("rotation_effects");
+    if (!effects.is_boolean())
+      comp.fail(comp.full("rotation_effects"),
+                "must be true or false, got " + effects.dump().substr(0, 80));
+    c.rotation_effects = effects.get<bool>();
+    if (c.rotation_effects && c.source == ComponentSource::matrix_market)
+      comp.fail(comp.full("rotation_effects"),
+                "needs a calculix_deck or gmsh_blade source (ccx runs the deck under the "
+                "centrifugal load), the source is a Matrix Market folder");
+    if (c.rotation_effects && !c.calculix_matrices.empty())
+      comp.fail(comp.full("rotation_effects"),
+                "needs ccx to run the deck under the centrifugal load, and "
+                "source.calculix_matrices names matrices already written: drop one of them");
+  }
   c.units = string_value(comp, cj, "units");
   comp.claim("rotation_axis");
   if (cj.contains("rotation_axis")) {

@@ -121,6 +121,10 @@ struct ComponentCase {
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;
   bool lumped_mass = false;            ///< "component.mass": "lumped" (HRZ)
+  /// "component.rotation_effects": a contact run at speed Omega uses the
+  /// blade's K(Omega) and its static centrifugal growth in the gap
+  /// (rotating_component.hpp); false: the blade at rest at every speed.
+  bool rotation_effects = false;
   std::optional<RubbingSetup> rubbing;
   ComponentSweep sweep; ///< empty (no speeds) when the file has no "sweep"
   Damping damping;

@@ -8,6 +8,7 @@
 #include "assembler.hpp"
 #include "casing_forcing.hpp"
 #include "paper_components.hpp"
+#include "rotating_component.hpp"
 #include "rubbing_points.hpp"
 
 namespace rsi {
@@ -111,7 +112,14 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
   Problem p;
   p.kind = ProblemKind::component;
   p.source = c.case_path;
-  p.structures.push_back(load_component(c, load));
+  Eigen::VectorXd deflection;
+  if (c.rotation_effects && c.rubbing) {
+    RotatingComponent rotating = rotating_component(c, load, c.rubbing->rotation_speed);
+    p.structures.push_back(std::move(rotating.component));
+    deflection = std::move(rotating.deflection);
+  } else {
+    p.structures.push_back(load_component(c, load));
+  }
   p.damping = c.damping;
   p.casing.rigid = true;
   if (c.rubbing) {
@@ -134,6 +142,9 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     p.casing.oval_gap = r.oval_gap;
     p.casing.gap = r.gap;
     p.casing.gap_width = r.gap_width;
+    if (deflection.size() > 0)
+      for (int node : p.contact.contact_nodes)
+        p.casing.tip_growth.push_back(radial_growth(comp, deflection, node));
     p.steps.rule = ProblemSteps::Rule::per_revolution;
     p.steps.revolutions = r.revolutions;
     p.steps.steps_per_revolution = r.steps_per_revolution;

@@ -25,6 +25,9 @@
 //   a revolution and k the smallest integer under step_safety x 2/omega_max;
 //   a row every output_every samples with the response dof beside it. A
 //   component case without "rubbing" has its structure and no contact.
+//   With component.rotation_effects the structure is K(Omega) at the
+//   case's speed and the gaps close by the contact nodes' static growth
+//   (ProblemCasing::tip_growth).
 
 #include <optional>
 #include <string>
@@ -81,6 +84,11 @@ struct ProblemCasing {
   double gap = 0.0;        ///< rigid: g_m (oval) or g0 (constant) [length]
   double gap_width = 0.0;  ///< rigid oval: w in (0, 1)
   double clearance = 0.0;  ///< flexible: R_c - R_t at rest [m]
+  /// rigid, with rotation effects: each contact node's static radial growth
+  /// at the problem's speed (rotating_component.hpp), subtracted from its
+  /// imposed gap (the dynamic displacement is measured from the deflected
+  /// state); empty: none.
+  std::vector<double> tip_growth;
 };
 
 /// The external force on the system dofs: F while t <= until (plus 1e-6 dt,

@@ -176,5 +176,48 @@ TEST(RigidCasingAxis, RefusesAZeroAxisAndANodeOnIt) {
   EXPECT_THROW(reduced_law(on_axis, axis), std::invalid_argument);
 }
 
+// Rotation effects: each contact node's static radial growth closes its gap,
+// g = g0(theta) - growth_c, in both laws (the oval's value at theta is the
+// same expression in each, so the difference is the growth to round-off of
+// one subtraction); a growth that is not finite, or of the wrong count, is
+// refused.
+TEST(RigidCasingGrowth, BothLawsCloseEachGapByItsGrowth) {
+  const std::vector<Eigen::Vector3d>& x = positions();
+  const std::vector<double> growth{0.073, 0.121, 0.0, -0.01};
+  std::vector<RigidSurfaceNode> nodes = nodes_at(x);
+  for (size_t c = 0; c < nodes.size(); ++c) nodes[c].growth = growth[c];
+  const double omega = 1344.0;
+  const RigidSurfaceContact reference(nodes, ImposedGap::oval(0.356, 0.15), omega, 0.1, omega);
+  const RigidSurfaceContact reference_rest(nodes_at(x), ImposedGap::oval(0.356, 0.15), omega, 0.1,
+                                           omega);
+  const CasingGap oval = oval_casing_gap(0.356);
+  const RigidCasing reduced(x, slots(x.size()), oval, omega, omega, Eigen::Vector3d::UnitZ(),
+                            growth);
+  const RigidCasing reduced_rest(x, slots(x.size()), oval, omega, omega);
+  double worst = 0.0;
+  for (int c = 0; c < static_cast<int>(x.size()); ++c)
+    for (double t : {0.0, 1e-4, 7.3e-4, 2e-3}) {
+      const double g_rest = reference_rest.imposed_gap(c, t);
+      // |g| <= g_m: one rounding of the difference, eps (g_m + growth).
+      const double bound = eps * (0.356 + std::abs(growth[c]));
+      worst = std::max(worst, std::abs(reference.imposed_gap(c, t) - (g_rest - growth[c])));
+      EXPECT_LE(std::abs(reference.imposed_gap(c, t) - (g_rest - growth[c])), bound);
+      EXPECT_LE(std::abs(reduced.imposed_gap(c, t) - (reduced_rest.imposed_gap(c, t) - growth[c])),
+                bound);
+      // The two laws' oval gaps, written apart, agree to a few roundings of g_m.
+      EXPECT_LE(std::abs(reduced.imposed_gap(c, t) - reference.imposed_gap(c, t)), 64 * eps);
+    }
+  std::printf("largest |g - (g_rest - growth)| %.2e\n", worst);
+  nodes[1].growth = std::nan("");
+  EXPECT_THROW(RigidSurfaceContact(nodes, ImposedGap::constant(0.1), omega, 0.1, omega),
+               std::invalid_argument);
+  EXPECT_THROW(RigidCasing(x, slots(x.size()), oval, omega, omega, Eigen::Vector3d::UnitZ(),
+                           std::vector<double>{0.1}),
+               std::invalid_argument);
+  EXPECT_THROW(RigidCasing(x, slots(x.size()), oval, omega, omega, Eigen::Vector3d::UnitZ(),
+                           std::vector<double>{0.1, INFINITY, 0.0, 0.0}),
+               std::invalid_argument);
+}
+
 } // namespace
 } // namespace rsi
