@@ -24,7 +24,7 @@ import scipy.sparse.linalg as sla
 
 def model_part(inp):
     text = open(inp).read()
-    for marker in ("*NSET, NSET=RSI_ALL_NODES", "*STEP"):
+    for marker in ("\n*NSET, NSET=RSI_ALL_NODES", "\n*STEP"):
         if marker in text:
             return text[: text.index(marker)]
     return text
