@@ -237,6 +237,7 @@ WALK = {
     "component.units": (BASE, "modes", [with_value("component.units", "N, mm, t, ms")]),
     "component.rotation_axis": (BASE, "rubbing", [with_value("component.rotation_axis", [0, 0.6, 0.8])]),
     "component.mass": (BASE, "modes", [with_value("component.mass", "lumped")]),
+    "component.rotation_effects": (BASE, "rubbing", [with_value("component.rotation_effects", True)]),
     "modal_campaign.methods": (BASE, "modal", [with_value("modal_campaign.methods", ["cb", "macneal"])]),
     "modal_campaign.modes": (BASE, "modal", [with_value("modal_campaign.modes", [3])]),
     "modal_campaign.frequencies": (BASE, "modal", [with_value("modal_campaign.frequencies", 2)]),
