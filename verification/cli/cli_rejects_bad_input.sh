@@ -431,6 +431,8 @@ rubbing_variant response "{\"gap\": {\"constant\": 0}, \"friction_coefficient\":
 rubbing_variant steps "{\"gap\": {\"constant\": 0}, \"friction_coefficient\": 0.1, \"rotation_speed\": 100, \"revolutions\": 100000, \"steps_per_revolution\": 100000, \"response\": {\"node\": 2, \"direction\": 2}}"
 rubbing_variant unknown "{$rub, \"friction_coefficient\": 0.1, \"colour\": 1}"
 rubbing_variant mass "{$rub, \"friction_coefficient\": 0.1}" ', "mass": "diagonal"'
+rubbing_variant rotation-matrices "{$rub, \"friction_coefficient\": 0.1}" ', "rotation_effects": true'
+rubbing_variant rotation-type "{$rub, \"friction_coefficient\": 0.1}" ', "rotation_effects": 1'
 rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
 rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
 rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
@@ -455,6 +457,11 @@ expect 2 "key 'rubbing.response': node 99 direction 2 is not a dof of the model"
 expect 2 "key 'rubbing.revolutions': revolutions x steps_per_revolution must be at most 2147483647" -- "$rsi" simulate "$work/rubbing-steps.json" --out "$work/out"
 expect 2 "key 'rubbing.colour': unknown key" -- "$rsi" simulate "$work/rubbing-unknown.json" --out "$work/out"
 expect 2 "key 'component.mass': must be \"consistent\" or \"lumped\" (HRZ), got \"diagonal\"" -- "$rsi" simulate "$work/rubbing-mass.json" --out "$work/out"
+expect 2 "key 'component.rotation_effects': needs ccx to run the deck under the centrifugal load, and source.calculix_matrices names matrices already written" -- "$rsi" simulate "$work/rubbing-rotation-matrices.json" --out "$work/out"
+expect 2 "key 'component.rotation_effects': must be true or false, got 1" -- "$rsi" simulate "$work/rubbing-rotation-type.json" --out "$work/out"
+expect 2 "--speed: rotation effects are for a component case (a CalculiX deck or the gmsh blade); $src/data/cases/batailly2007.json is the paper's 2D case" -- "$rsi" modes "$src/data/cases/batailly2007.json" --speed 100 --out "$work/out"
+expect 2 "--speeds: a Campbell diagram needs at least two speeds, got '100'" -- "$rsi" modes "$work/rubbing-mass.json" --speeds 100 --out "$work/out"
+expect 2 "--speeds: the speeds must ascend, got '200,100'" -- "$rsi" modes "$work/rubbing-mass.json" --speeds 200,100 --out "$work/out"
 expect 2 "key 'rubbing.campaign': missing, nothing to run" -- "$rsi" campaign "$work/rubbing-no-campaign.json" --out "$work/out"
 expect 2 "--jobs: a component case's campaign runs one run at a time" -- "$rsi" campaign "$work/rubbing-campaign.json" --jobs 2 --out "$work/out"
 expect 2 "--target-e2: only for the paper's case" -- "$rsi" campaign "$work/rubbing-campaign.json" --target-e2 0.1 --out "$work/out"
