@@ -221,6 +221,17 @@ std::string calculix_matrices(const CalculixDeck& deck, const std::string& cache
 
 namespace {
 
+/// The first `count` eigenvalues of the table in `dat`; ImportError when
+/// ccx found fewer.
+std::vector<double> first_eigenvalues(const fs::path& dat, int count) {
+  std::vector<double> values = read_calculix_eigenvalues(dat.string());
+  if (static_cast<int>(values.size()) < count)
+    throw ImportError(dat.string() + ": ccx found " + std::to_string(values.size()) +
+                      " eigenvalues, " + std::to_string(count) + " were asked");
+  values.resize(count);
+  return values;
+}
+
 /// The model-part set of every node (ids need not all be nodes: ccx takes
 /// a GENERATE range as it is) and the nonlinear static step under the
 /// centrifugal load, printing every node's displacement.
@@ -267,13 +278,7 @@ std::vector<double> calculix_prestressed_eigenvalues(const CalculixDeck& deck,
       prestress_steps(deck, load) + "*FREQUENCY\n" + std::to_string(count) + "\n*END STEP\n";
   const fs::path entry = cached_run(deck, step, "prestressed-modes" + std::to_string(count),
                                     {"job.dat"}, cache_dir);
-  std::vector<double> values = read_calculix_eigenvalues((entry / "job.dat").string());
-  if (static_cast<int>(values.size()) < count)
-    throw ImportError((entry / "job.dat").string() + ": ccx found " +
-                      std::to_string(values.size()) + " eigenvalues, " + std::to_string(count) +
-                      " were asked");
-  values.resize(count);
-  return values;
+  return first_eigenvalues(entry / "job.dat", count);
 }
 
 std::map<int, Eigen::Vector3d> read_calculix_displacements(const std::string& dat_path) {
@@ -314,13 +319,7 @@ std::vector<double> calculix_eigenvalues(const CalculixDeck& deck, int count,
                            "\n*NODE FILE\nU\n*END STEP\n";
   const fs::path entry = cached_run(deck, step, "modes" + std::to_string(count), {"job.dat"},
                                     cache_dir);
-  std::vector<double> values = read_calculix_eigenvalues((entry / "job.dat").string());
-  if (static_cast<int>(values.size()) < count)
-    throw ImportError((entry / "job.dat").string() + ": ccx found " +
-                      std::to_string(values.size()) + " eigenvalues, " + std::to_string(count) +
-                      " were asked");
-  values.resize(count);
-  return values;
+  return first_eigenvalues(entry / "job.dat", count);
 }
 
 std::vector<double> read_calculix_eigenvalues(const std::string& dat_path) {

@@ -24,23 +24,10 @@ import os
 import sys
 
 import numpy as np
-import scipy.sparse as sp
 import scipy.sparse.linalg as sla
 from scipy.interpolate import CubicSpline
 
-
-def model_part(inp):
-    text = open(inp).read()
-    for marker in ("\n*NSET, NSET=RSI_ALL_NODES", "\n*STEP"):
-        if marker in text:
-            return text[: text.index(marker)]
-    return text
-
-
-def read_matrix(path, n):
-    d = np.loadtxt(path)
-    a = sp.coo_matrix((d[:, 2], (d[:, 0].astype(int) - 1, d[:, 1].astype(int) - 1)), shape=(n, n)).tocsc()
-    return (a + a.T - sp.diags(a.diagonal())).tocsc()
+from fit_study import model_part, read_matrix  # this script's folder
 
 
 def deflection(entry, dofs):
