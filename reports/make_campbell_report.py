@@ -105,6 +105,15 @@ def main():
         rest = 2 * math.pi * f[(speeds[0], i)] / k
         lines.append(f"| {i} | {k} | {c['speed_rad_s']:.1f} | {c['speed_rad_s'] * 30 / math.pi:.0f} | "
                      f"{c['frequency_hz']:.1f} | {rest:.1f}" + (" (beyond the range)" if rest > speeds[-1] else "") + " |")
+    found = {(int(c["mode"]), int(c["engine_order"])) for c in crossings}
+    gone = [(i, k, 2 * math.pi * f[(speeds[0], i)] / k) for i in modes[:3] for k in range(1, 11)
+            if 2 * math.pi * f[(speeds[0], i)] / k <= speeds[-1] and (i, k) not in found]
+    if gone:
+        lines += ["", "Crossings the blade at rest would have in this range and the rotating blade "
+                  "has not (its mode has risen above the order's line up to the last speed):", ""]
+        lines += [f"- mode {i}, engine order {k}: at rest {w:.1f} rad/s ({w * 30 / math.pi:.0f} rpm); "
+                  f"at {speeds[-1]:g} rad/s the mode is at {f[(speeds[-1], i)]:.1f} Hz, the order at "
+                  f"{k * speeds[-1] / (2 * math.pi):.1f} Hz" for i, k, w in gone]
     lines.append("")
     write_whole(os.path.join(out, "campbell.md"), lambda p: open(p, "w").write("\n".join(lines)))
     print(f"wrote {out}/campbell.png and {out}/campbell.md")
