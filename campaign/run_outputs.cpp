@@ -156,6 +156,8 @@ std::string summary_json(const RunSummary& s) {
     nlohmann::ordered_json l;
     l["plastic_work"] = s.final_plastic_work;
     l["unmatched_work"] = s.liner_unmatched_work;
+    l["cell_area"] = s.liner_cell_area;
+    l["bar_stiffness"] = s.liner_bar_stiffness;
     l["max_wear_depth"] = s.max_wear_depth;
     l["wear_lobes"] = s.wear_lobes;
     j["liner"] = l;

@@ -247,6 +247,8 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
     for (int cell = 0; cell < a.n_cells(); ++cell) result.wear[static_cast<size_t>(cell)] = a.wear(cell);
     s.liner = true;
     s.final_plastic_work = liner->plastic_work();
+    s.liner_cell_area = a.cell_area();
+    s.liner_bar_stiffness = a.stiffness();
     s.max_wear_depth = *std::max_element(result.wear.begin(), result.wear.end());
     s.wear_lobes = wear_lobes(result.wear, a.n_theta(), a.n_axial());
   }

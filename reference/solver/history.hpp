@@ -151,6 +151,8 @@ struct RunSummary {
   /// The bars' work not done by the contact force at the end
   /// (CentralDifference::liner_unmatched_work) [force * length].
   double liner_unmatched_work = 0.0;
+  double liner_cell_area = 0.0;     ///< A = r dtheta dz of a cell [length^2]
+  double liner_bar_stiffness = 0.0; ///< k = E A / h [force / length]
   double max_wear_depth = 0.0;     ///< the deepest cell's wear at the end [length]
   /// Local maxima of the wear around the circumference above half the
   /// deepest (liner_wear.hpp), the largest over the axial rows.
