@@ -34,6 +34,7 @@
 #     cells' wear never decreases: AbradableLiner::commit refuses it), the
 #     summary's max depth equal to wear.csv's largest depth and its lobe
 #     count equal to the count of data/README.md's rule, recomputed here.
+#  4. A reduced run (--method cb) refuses the key: exit 2 naming it, no output.
 # Skipped (exit 77) without gmsh or ccx. About 10 s in Release.
 # Usage: liner_rubbing.sh RSI SOURCE_DIR CACHE
 set -u
@@ -60,6 +61,15 @@ for name in rigid stiff soft; do
     exit 1
   fi
 done
+# The reduced solvers do not model the liner: a reduced run refuses the key
+# (exit 2, naming it) and writes nothing.
+"$rsi" simulate "$work/soft.json" --method cb --modes 10 --ccx-cache "$cache" --out "$work/cb" >"$work/cb.log" 2>&1
+status=$?
+if [ "$status" -ne 2 ] || ! grep -q "rubbing.liner" "$work/cb.log" || [ -e "$work/cb" ]; then
+  echo "FAIL: --method cb with a liner: exit $status (wanted 2 naming rubbing.liner, no --out): $(tail -n 2 "$work/cb.log")"
+  exit 1
+fi
+echo "ok   --method cb with a liner refused (exit 2): $(tail -n 1 "$work/cb.log")"
 /usr/bin/python3 - "$work" <<'PY'
 import csv, json, sys
 work = sys.argv[1]
