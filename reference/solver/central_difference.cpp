@@ -520,11 +520,13 @@ void CentralDifference::attach_liner(LinerSurface& liner) {
     for (int j = i + 1; j < b * nc; ++j) {
       const double wjj = contact_flexibility(geo.rows[j], geo.rows[j]);
       if (std::abs(contact_flexibility(geo.rows[i], geo.rows[j])) > tolerance * std::sqrt(wii * wjj))
-        throw std::invalid_argument("contact nodes " + std::to_string(i / b) + " and " +
-                                    std::to_string(j / b) +
-                                    " are coupled through the mass (the liner's node-by-node "
-                                    "solve needs a lumped mass and no stiffness-proportional "
-                                    "damping)");
+        throw std::invalid_argument(
+            (i / b == j / b ? "contact node " + std::to_string(i / b) +
+                                  ": its normal and tangential rows are"
+                            : "contact nodes " + std::to_string(i / b) + " and " +
+                                  std::to_string(j / b) + " are") +
+            " coupled through the mass (the liner's node-by-node solve needs a lumped mass, "
+            "the same in x, y and z at a node, and no stiffness-proportional damping)");
     }
   }
   m_liner = &liner;
