@@ -136,13 +136,13 @@ ProblemLiner problem_liner(const ComponentCase& c, const LinerSetup& setup, cons
   l.n_theta = setup.cells_around;
   l.n_axial = setup.rows;
   if (!(setup.thickness < radius))
-    throw CaseError(c.case_path + ": key 'rubbing.liner.thickness' must be less than the contact "
+    throw CaseError(c.case_path + ": the abradable liner's thickness must be less than the contact "
                                   "nodes' largest radius about the rotation axis, " +
                     std::to_string(radius) + ", got " + std::to_string(setup.thickness));
   if (setup.axial_extent) {
     if (z_low < setup.z_min || z_high > setup.z_max)
-      throw CaseError(c.case_path + ": keys 'rubbing.liner.z_min', 'z_max' must cover the contact "
-                                    "nodes' axial coordinates [" + std::to_string(z_low) + ", " +
+      throw CaseError(c.case_path + ": the abradable liner's axial extent (z_min, z_max) must cover "
+                                    "the contact nodes' axial coordinates [" + std::to_string(z_low) + ", " +
                       std::to_string(z_high) + "], got [" + std::to_string(setup.z_min) + ", " +
                       std::to_string(setup.z_max) + "]");
     l.z_min = setup.z_min;

@@ -49,8 +49,8 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
     try {
       cd.attach_liner(*liner);
     } catch (const std::invalid_argument& e) {
-      throw CaseError(system.source + ": key 'rubbing.liner': " + e.what() +
-                      "; set component.mass to \"lumped\" and use no Rayleigh beta");
+      throw CaseError(system.source + ": the abradable liner: " + e.what() +
+                      "; use a lumped mass and no stiffness-proportional Rayleigh damping");
     }
   }
   s.flops_per_step = cd.flops_per_step();
@@ -223,7 +223,7 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
     try {
       liner.emplace(*contact.rigid_surface(), geometry, material);
     } catch (const std::invalid_argument& e) {
-      throw CaseError(problem.source + ": key 'rubbing.liner': " + e.what());
+      throw CaseError(problem.source + ": the abradable liner: " + e.what());
     }
   }
   RunMonitor monitor(rules, std::make_unique<RubbingMonitor>(*contact.rigid_surface()), run,
