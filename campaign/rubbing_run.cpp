@@ -168,6 +168,7 @@ double run_speed(const RubbingModel& model, const RubbingRunOptions& options) {
 
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
+  refuse_liner(model.component_case(), "a reduced run");
   const RubbingSetup& setup = model.setup();
   const double omega = run_speed(model, options);
   const auto t0 = std::chrono::steady_clock::now();
@@ -275,10 +276,15 @@ RubbingRun run_full_rubbing(const RubbingModel& model, const RubbingRunOptions& 
     const double response = (*row.tip_displacement)(0);
     const HistoryRow out{row.time,          row.gap,           row.lambda,
                          row.energy,        row.external_work, row.contact_work,
-                         row.damping_work,  row.lambda_tangential};
+                         row.damping_work,  row.lambda_tangential,
+                         nullptr,           row.plastic_work};
     sink(out, response);
   };
-  run.summary = run_full_order(model.problem, o, point).summary;
+  RunResult result = run_full_order(model.problem, o, point);
+  run.summary = result.summary;
+  run.wear = std::move(result.wear);
+  run.wear_n_theta = result.wear_n_theta;
+  run.wear_n_axial = result.wear_n_axial;
   return run;
 }
 
@@ -289,8 +295,17 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
   return RubbingModel{component_problem(c, load)};
 }
 
+void refuse_liner(const ComponentCase& c, const std::string& what) {
+  if (c.rubbing && c.rubbing->liner)
+    throw CaseError(c.case_path + ": key 'rubbing.liner': " + what +
+                    " does not model the abradable liner yet (only the full-order run, "
+                    "rsi simulate --method full, does): remove the key for a rigid casing, or "
+                    "run the full-order model");
+}
+
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                        const ComponentRowSink& sink) {
+  if (options.method != "full") refuse_liner(model.component_case(), "--method " + options.method);
   if (options.method != "full" && options.method != "cb" && options.method != "ccm" &&
       options.method != "guyan" && options.method != "macneal")
     throw std::invalid_argument("--method: must be full, cb, ccm, guyan or macneal, got '" +

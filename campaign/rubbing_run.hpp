@@ -51,6 +51,11 @@ struct RubbingModel {
 /// ImportError.
 RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptions& load);
 
+/// Throws CaseError naming 'rubbing.liner' if the case has an abradable
+/// liner: only the full-order run models it yet (`what` names the run that
+/// would ignore it, e.g. "--method cb").
+void refuse_liner(const ComponentCase& c, const std::string& what);
+
 /// One history row with the response dof's displacement beside it.
 using ComponentRowSink = std::function<void(const HistoryRow& row, double response)>;
 
@@ -79,6 +84,10 @@ struct RubbingRun {
   int reduced_size = 0;     ///< r of a reduced model (0: full)
   double step_limit = 0.0;  ///< the limit the step was chosen under [s] (MacNeal: boundary held)
   double first_mode_hz = 0.0; ///< CCM, MacNeal: the lowest kept free-interface mode (0: none)
+  /// A full run with an abradable liner: RunResult's wear, n_theta, n_axial.
+  std::vector<double> wear;
+  int wear_n_theta = 0;
+  int wear_n_axial = 0;
 };
 
 /// The most steps a run counts (RunSummary's int), and the largest

@@ -59,6 +59,7 @@ void append_history_csv_row(std::string& out, const HistoryRow& row) {
       out += ',', append(out, (*row.lambda_tangential)(k));
   for (double x : {row.energy, row.external_work, row.contact_work, row.damping_work})
     out += ',', append(out, x);
+  if (row.plastic_work) out += ',', append(out, *row.plastic_work);
   out += '\n';
 }
 
@@ -151,6 +152,16 @@ std::string summary_json(const RunSummary& s) {
   j["contact_intervals_blade_1"] = nlohmann::ordered_json::array();
   for (const auto& [first, last] : s.contact_intervals_blade_1)
     j["contact_intervals_blade_1"].push_back({first, last});
+  if (s.liner) {
+    nlohmann::ordered_json l;
+    l["plastic_work"] = s.final_plastic_work;
+    l["unmatched_work"] = s.liner_unmatched_work;
+    l["cell_area"] = s.liner_cell_area;
+    l["bar_stiffness"] = s.liner_bar_stiffness;
+    l["max_wear_depth"] = s.max_wear_depth;
+    l["wear_lobes"] = s.wear_lobes;
+    j["liner"] = l;
+  }
   return j.dump(2) + "\n";
 }
 

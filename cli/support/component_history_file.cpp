@@ -14,7 +14,10 @@ ComponentHistoryFile::ComponentHistoryFile(const std::string& path,
 
 void ComponentHistoryFile::append(const HistoryRow& row, double response) {
   m_line.clear();
-  if (m_rows++ == 0) m_line = m_header;
+  if (m_rows++ == 0) {
+    m_line = m_header;
+    if (row.plastic_work) m_line.insert(m_line.size() - 1, ",W_plastic");
+  }
   std::string rest;
   append_history_csv_row(rest, row);
   const size_t comma = rest.find(',');

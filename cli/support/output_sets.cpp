@@ -22,7 +22,7 @@ OutputSet reduce_output_set() {
 }
 
 OutputSet simulate_output_set() {
-  return {"history.csv", "field.csv", "casing_first_contact.csv", "summary.json"};
+  return {"history.csv", "field.csv", "casing_first_contact.csv", "summary.json", "wear.csv"};
 }
 
 OutputSet campaign_output_set() {

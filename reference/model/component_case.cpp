@@ -255,6 +255,36 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
           campaign.number("full_revolutions", {0.0, out.revolutions, false, false, "(at most revolutions)"});
     campaign.finish();
   }
+  r.claim("liner");
+  if (object.contains("liner")) {
+    const json& lj = object.at("liner");
+    ObjectReader liner = r.object("liner");
+    LinerSetup l;
+    l.thickness = liner.number("thickness", {0.0, inf, true, true, "(length)"});
+    l.young_modulus = liner.number("young_modulus", {0.0, inf, true, true, "(stress)"});
+    l.yield_stress = liner.number("yield_stress", {0.0, inf, true, true, "(stress)"});
+    l.hardening_modulus = liner.number("hardening_modulus", {0.0, inf, false, true, "(stress)"});
+    l.cells_around = liner.integer("cells_around", 1, 10000000);
+    liner.claim("rows");
+    if (lj.contains("rows")) l.rows = liner.integer("rows", 1, 100000);
+    liner.claim("z_min");
+    liner.claim("z_max");
+    if (lj.contains("z_min") != lj.contains("z_max"))
+      liner.fail(liner.full(lj.contains("z_min") ? "z_max" : "z_min"),
+                 "must be given with " + std::string(lj.contains("z_min") ? "z_min" : "z_max") +
+                     " (the liner's axial extent, z_min < z_max), or neither");
+    if (lj.contains("z_min")) {
+      l.axial_extent = true;
+      l.z_min = liner.number("z_min", {-inf, inf, true, true, "(length)"});
+      l.z_max = liner.number("z_max", {-inf, inf, true, true, "(length)"});
+      if (!(l.z_max > l.z_min))
+        liner.fail(liner.full("z_max"), "must be greater than z_min = " +
+                                            std::to_string(l.z_min) + ", got " +
+                                            std::to_string(l.z_max));
+    }
+    liner.finish();
+    out.liner = l;
+  }
   r.finish();
   if (static_cast<double>(out.steps_per_revolution) * out.revolutions > 2147483647.0)
     r.fail(r.full("revolutions"), "revolutions x steps_per_revolution must be at most "

@@ -59,6 +59,22 @@ struct RubbingRuns {
 };
 
 /// The "rubbing" object: a contact run on the rigid casing (issue 12).
+/// The optional abradable liner of the rigid casing (SPEC §9,
+/// reference/contact/abradable_liner.hpp): its bars' material and the cells.
+struct LinerSetup {
+  double thickness = 0.0;         ///< h > 0 [length]
+  double young_modulus = 0.0;     ///< E > 0 [stress]
+  double yield_stress = 0.0;      ///< sigma_y > 0 [stress]
+  double hardening_modulus = 0.0; ///< H >= 0 [stress]
+  int cells_around = 0;           ///< n_theta >= 1
+  int rows = 1;                   ///< axial rows >= 1
+  /// z_min < z_max along the rotation axis; absent: the contact nodes'
+  /// axial extent widened by a margin (problem.cpp).
+  bool axial_extent = false;
+  double z_min = 0.0;
+  double z_max = 0.0;
+};
+
 struct RubbingSetup {
   std::vector<int> contact_nodes;   ///< empty: the boundary's nodes, in boundary order
   bool oval_gap = true;             ///< oval (g_m, width) or constant (gap)
@@ -85,6 +101,7 @@ struct RubbingSetup {
   double step_safety = 0.9;         ///< mass-carrying runs: dt <= safety 2/omega_max, in (0, 1)
   std::vector<RubbingRuns> campaign; ///< reduced runs of `rsi campaign`
   double full_revolutions = 0.0;    ///< the campaign's full reference window (0: none)
+  std::optional<LinerSetup> liner;  ///< absent: the rigid, unworn casing
 };
 
 /// One run of a component sweep: "full" (modes 0) or a reduced method and

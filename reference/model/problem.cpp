@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
@@ -108,6 +109,54 @@ Problem paper_problem(const Case& c) {
   return p;
 }
 
+namespace {
+
+/// The liner of a rubbing case (ProblemLiner): radius and default axial
+/// extent from the contact nodes about the component's rotation axis.
+ProblemLiner problem_liner(const ComponentCase& c, const LinerSetup& setup, const Component& comp,
+                           const std::vector<int>& contact_nodes) {
+  const Eigen::Vector3d a = comp.rotation_axis.normalized();
+  double radius = 0.0;
+  double z_low = std::numeric_limits<double>::infinity();
+  double z_high = -z_low;
+  for (int id : contact_nodes)
+    for (const ComponentNode& node : comp.nodes)
+      if (node.id == id) {
+        const double z = a.dot(node.x);
+        radius = std::max(radius, (node.x - z * a).norm());
+        z_low = std::min(z_low, z);
+        z_high = std::max(z_high, z);
+      }
+  ProblemLiner l;
+  l.radius = radius;
+  l.thickness = setup.thickness;
+  l.young = setup.young_modulus;
+  l.yield = setup.yield_stress;
+  l.hardening = setup.hardening_modulus;
+  l.n_theta = setup.cells_around;
+  l.n_axial = setup.rows;
+  if (!(setup.thickness < radius))
+    throw CaseError(c.case_path + ": the abradable liner's thickness must be less than the contact "
+                                  "nodes' largest radius about the rotation axis, " +
+                    std::to_string(radius) + ", got " + std::to_string(setup.thickness));
+  if (setup.axial_extent) {
+    if (z_low < setup.z_min || z_high > setup.z_max)
+      throw CaseError(c.case_path + ": the abradable liner's axial extent (z_min, z_max) must cover "
+                                    "the contact nodes' axial coordinates [" + std::to_string(z_low) + ", " +
+                      std::to_string(z_high) + "], got [" + std::to_string(setup.z_min) + ", " +
+                      std::to_string(setup.z_max) + "]");
+    l.z_min = setup.z_min;
+    l.z_max = setup.z_max;
+  } else {
+    const double margin = z_high > z_low ? 0.05 * (z_high - z_low) : setup.thickness;
+    l.z_min = z_low - margin;
+    l.z_max = z_high + margin;
+  }
+  return l;
+}
+
+} // namespace
+
 Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& load) {
   Problem p;
   p.kind = ProblemKind::component;
@@ -145,6 +194,7 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     if (deflection.size() > 0)
       for (int node : p.contact.contact_nodes)
         p.casing.tip_growth.push_back(radial_growth(comp, deflection, node));
+    if (r.liner) p.casing.liner = problem_liner(c, *r.liner, comp, p.contact.contact_nodes);
     p.steps.rule = ProblemSteps::Rule::per_revolution;
     p.steps.revolutions = r.revolutions;
     p.steps.steps_per_revolution = r.steps_per_revolution;

@@ -77,6 +77,25 @@ struct ProblemContact {
 };
 
 /// The casing: rigid with an imposed gap, or a flexible structure.
+/// The abradable liner on the rigid casing (rubbing.liner; the law is
+/// reference/contact/abradable_liner.hpp). The unworn surface's radius is
+/// the largest radius of the contact nodes about the rotation axis (their
+/// gap is measured to that surface; it sets the cells' area r dtheta dz);
+/// the axial extent is the case's, or the contact nodes' axial coordinates
+/// (a . X) widened by 5 % of their span on each side (by the thickness when
+/// they all lie at one axial coordinate).
+struct ProblemLiner {
+  double radius = 0.0;    ///< r > h [length]
+  double thickness = 0.0; ///< h [length]
+  double young = 0.0;     ///< E [stress]
+  double yield = 0.0;     ///< sigma_y [stress]
+  double hardening = 0.0; ///< H [stress]
+  int n_theta = 1;
+  int n_axial = 1;
+  double z_min = 0.0;
+  double z_max = 0.0;
+};
+
 struct ProblemCasing {
   bool rigid = false;
   int structure = -1;      ///< flexible: its index in Problem::structures
@@ -89,6 +108,8 @@ struct ProblemCasing {
   /// imposed gap (the dynamic displacement is measured from the deflected
   /// state); empty: none.
   std::vector<double> tip_growth;
+  /// rigid: the abradable liner on it (absent: the rigid, unworn surface).
+  std::optional<ProblemLiner> liner;
 };
 
 /// The external force on the system dofs: F while t <= until (plus 1e-6 dt,

@@ -488,6 +488,102 @@ void CentralDifference::solve_coulomb(FrictionalContactCertificate& certificate)
       kStepRemedy);
 }
 
+double CentralDifference::liner_contact_work() const {
+  if (!m_liner) return m_contact_work;
+  return m_contact_work + m_liner->elastic_energy() + m_liner->plastic_work();
+}
+
+double CentralDifference::liner_unmatched_work() const {
+  if (!m_liner) return 0.0;
+  return (m_wall_work - m_normal_work) - (m_liner->elastic_energy() + m_liner->plastic_work());
+}
+
+void CentralDifference::attach_liner(LinerSurface& liner) {
+  if (m_frictional != &liner.law())
+    throw std::invalid_argument("CentralDifference::attach_liner: the liner is on another contact law");
+  const int nc = m_frictional->n_contacts();
+  const int b = 1 + m_n_tangents;
+  // The rows are the undeformed nodes' frames, the same at every step.
+  FrictionalContactGeometry geo;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m_m.rows());
+  m_frictional->evaluate(zero, zero, 0.0, m_dt, geo);
+  // W diagonal with equal entries on a node's rows, to 1e-12 relative (a
+  // lumped node block m I gives dt^2/m exactly off round-off of the frame).
+  const double tolerance = 1e-12;
+  for (int i = 0; i < b * nc; ++i) {
+    const double wii = contact_flexibility(geo.rows[i], geo.rows[i]);
+    const double wnn = contact_flexibility(geo.rows[b * (i / b)], geo.rows[b * (i / b)]);
+    if (!(wii > 0.0) || std::abs(wii - wnn) > tolerance * wnn)
+      throw std::invalid_argument("contact node " + std::to_string(i / b) +
+                                  ": its normal and tangential compliances differ (the liner's "
+                                  "node-by-node solve needs a lumped mass)");
+    for (int j = i + 1; j < b * nc; ++j) {
+      const double wjj = contact_flexibility(geo.rows[j], geo.rows[j]);
+      if (std::abs(contact_flexibility(geo.rows[i], geo.rows[j])) > tolerance * std::sqrt(wii * wjj))
+        throw std::invalid_argument(
+            (i / b == j / b ? "contact node " + std::to_string(i / b) +
+                                  ": its normal and tangential rows are"
+                            : "contact nodes " + std::to_string(i / b) + " and " +
+                                  std::to_string(j / b) + " are") +
+            " coupled through the mass (the liner's node-by-node solve needs a lumped mass, "
+            "the same in x, y and z at a node, and no stiffness-proportional damping)");
+    }
+  }
+  m_liner = &liner;
+}
+
+void CentralDifference::solve_liner(FrictionalContactCertificate& certificate, double t_next) {
+  const int nc = m_frictional->n_contacts();
+  const int d = m_n_tangents;
+  const int b = 1 + d;
+  const FrictionalContactGeometry& geo = m_geometry;
+  const double dt2 = m_dt * m_dt;
+  const double mu = m_frictional->friction_coefficient();
+  m_liner->begin_step();
+  m_play.clear();
+  m_lambda.setZero();
+  m_lambda_t.setZero();
+  m_correction.setZero(m_m.rows());
+  certificate = FrictionalContactCertificate{};
+  for (int c = 0; c < nc; ++c) {
+    const double w = contact_flexibility(geo.rows[b * c], geo.rows[b * c]);
+    const LinerBarResponse r = m_liner->respond(c, t_next, geo.normal_gap(c), w);
+    if (!(r.force > 0.0)) continue;
+    m_play.push_back(c);
+    m_lambda(c) = r.force;
+    // Coulomb on the disk of radius mu F: the stick multiplier cancels the
+    // predicted slip (s~ + W_tt lambda_t = 0); beyond the disk, its
+    // projection (the slip law lambda_t = -mu F s~/|s~|).
+    Eigen::VectorXd lt = -geo.slip.segment(d * c, d) / w;
+    const double norm = lt.norm();
+    const double radius = mu * r.force;
+    ContactClass cls = ContactClass::stick;
+    if (norm > radius) {
+      lt *= norm > 0.0 ? radius / norm : 0.0;
+      cls = ContactClass::slip;
+    }
+    m_lambda_t.segment(d * c, d) = lt;
+    certificate.classes.push_back(cls);
+    (cls == ContactClass::slip ? certificate.n_slip : certificate.n_stick)++;
+    if (cls == ContactClass::slip && lt.norm() > 0.0) {
+      const Eigen::VectorXd direction = -lt / lt.norm();
+      if (m_classes[c] == ContactClass::slip &&
+          direction.dot(m_slip_direction.segment(d * c, d)) < 0.0)
+        m_reversals_this_step++;
+      m_slip_direction.segment(d * c, d) = direction;
+    }
+    for (int p = 0; p < b; ++p) {
+      const double l = p == 0 ? r.force : lt(p - 1);
+      if (l == 0.0) continue;
+      for (const auto& [dof, coefficient] : geo.rows[b * c + p]) {
+        const InverseMassColumn& column = inverse_mass_column(dof);
+        m_correction.segment(column.first, column.values.size()) +=
+            (dt2 * l * coefficient) * column.values;
+      }
+    }
+  }
+}
+
 StepReport CentralDifference::step_coulomb() {
   predict();
   const double t_next = (m_n + 1) * m_dt;
@@ -509,7 +605,9 @@ StepReport CentralDifference::step_coulomb() {
   }
   FrictionalContactCertificate certificate;
   m_reversals_this_step = 0;
-  if (any) {
+  if (m_liner) {
+    solve_liner(certificate, t_next);
+  } else if (any) {
     solve_coulomb(certificate);
   } else {
     m_lambda.setZero();
@@ -527,11 +625,17 @@ StepReport CentralDifference::step_coulomb() {
         const double l = p == 0 ? m_lambda(c) : m_lambda_t(d * c + p - 1);
         if (l == 0.0) continue;
         const SparseRow& row = geo.rows[b * c + p];
-        m_contact_work +=
-            0.5 * l * (permuted_dot(row, m_predicted) - permuted_dot(row, m_u_prev));
+        const double work = 0.5 * l * (permuted_dot(row, m_predicted) - permuted_dot(row, m_u_prev));
+        m_contact_work += work;
+        if (m_liner && p == 0) {
+          m_normal_work += work;
+          const RigidSurfaceContact& law = m_liner->law();
+          m_wall_work -= 0.5 * l * (law.imposed_gap(c, t_next) - law.imposed_gap(c, t_next - 2.0 * m_dt));
+        }
       }
   }
   advance();
+  if (m_liner) m_liner->commit_step();
 
   // Monitors at the corrected state: the law at (u_n, u_{n+1}) (m_x is still
   // u_n on the law's dofs); without a correction u_{n+1} is the prediction.

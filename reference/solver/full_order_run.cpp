@@ -8,7 +8,9 @@
 #include <optional>
 #include <stdexcept>
 
+#include "case_file.hpp"
 #include "casing_forcing.hpp"
+#include "liner_wear.hpp"
 #include "central_difference.hpp"
 #include "modal_analysis.hpp"
 #include "paper_monitor.hpp"
@@ -42,6 +44,15 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
   std::optional<CentralDifference> integrator;
   emplace_integrator(integrator, system);
   CentralDifference& cd = *integrator;
+  LinerSurface* const liner = system.liner;
+  if (liner) {
+    try {
+      cd.attach_liner(*liner);
+    } catch (const std::invalid_argument& e) {
+      throw CaseError(system.source + ": the abradable liner: " + e.what() +
+                      "; use a lumped mass and no stiffness-proportional Rayleigh damping");
+    }
+  }
   s.flops_per_step = cd.flops_per_step();
   const Eigen::Index n_dofs = system.stiffness->rows();
   const bool has_force = system.forcing != nullptr && system.forcing->any();
@@ -67,16 +78,20 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
         cd.gap(),
         cd.lambda(),
         cd.external_work(),
-        cd.contact_work(),
+        liner ? cd.liner_contact_work() : cd.contact_work(),
         with_casing && system.casing_count > 0
             ? Eigen::Ref<const Eigen::VectorXd>(
                   cd.displacement().segment(system.casing_first, system.casing_count))
             : Eigen::Ref<const Eigen::VectorXd>(not_needed),
         cd.damping_work(),
         coulomb ? &cd.lambda_tangential() : nullptr,
-        system.tip_dofs.empty() ? nullptr : &tips};
+        system.tip_dofs.empty() ? nullptr : &tips,
+        liner != nullptr,
+        liner ? liner->plastic_work() : 0.0};
   };
-  const auto energy = [&]() { return cd.energy(); };
+  // With a liner E holds the bars' elastic energy beside the blade's
+  // (decisions.md: the liner's balance).
+  const auto energy = [&]() { return liner ? cd.energy() + liner->elastic_energy() : cd.energy(); };
 
   const Clock::time_point integration_start = Clock::now();
   bool forced = active(0.0);
@@ -101,7 +116,8 @@ void drive_full_order(const FullOrderSystem& system, RunMonitor& monitor, RunSum
   // The works where the run stopped (the last row's unless the last step was
   // outside the model and wrote none).
   s.final_external_work = cd.external_work();
-  s.final_contact_work = cd.contact_work();
+  s.final_contact_work = liner ? cd.liner_contact_work() : cd.contact_work();
+  if (liner) s.liner_unmatched_work = cd.liner_unmatched_work();
   s.final_damping_work = cd.damping_work();
 }
 
@@ -190,6 +206,26 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   rules.row_at_last_step = false;
   rules.balance_tolerance = rubbing_balance_tolerance;
   const StructureContact contact(problem, omega);
+  std::optional<LinerSurface> liner;
+  if (problem.casing.liner) {
+    const ProblemLiner& l = *problem.casing.liner;
+    LinerGeometry geometry;
+    geometry.radius = l.radius;
+    geometry.thickness = l.thickness;
+    geometry.n_theta = l.n_theta;
+    geometry.n_axial = l.n_axial;
+    geometry.z_min = l.z_min;
+    geometry.z_max = l.z_max;
+    LinerMaterial material;
+    material.young = l.young;
+    material.yield = l.yield;
+    material.hardening = l.hardening;
+    try {
+      liner.emplace(*contact.rigid_surface(), geometry, material);
+    } catch (const std::invalid_argument& e) {
+      throw CaseError(problem.source + ": the abradable liner: " + e.what());
+    }
+  }
   RunMonitor monitor(rules, std::make_unique<RubbingMonitor>(*contact.rigid_surface()), run,
                      result);
   FullOrderSystem system;
@@ -200,7 +236,22 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   system.contact = &contact;
   if (run.tip_displacement) system.tip_dofs = {problem.outputs.response_dof};
   system.failure_is_status = true;
+  system.liner = liner ? &*liner : nullptr;
+  system.source = problem.source;
   drive_full_order(system, monitor, s, start);
+  if (liner) {
+    const AbradableLiner& a = liner->liner();
+    result.wear_n_theta = a.n_theta();
+    result.wear_n_axial = a.n_axial();
+    result.wear.resize(static_cast<size_t>(a.n_cells()));
+    for (int cell = 0; cell < a.n_cells(); ++cell) result.wear[static_cast<size_t>(cell)] = a.wear(cell);
+    s.liner = true;
+    s.final_plastic_work = liner->plastic_work();
+    s.liner_cell_area = a.cell_area();
+    s.liner_bar_stiffness = a.stiffness();
+    s.max_wear_depth = *std::max_element(result.wear.begin(), result.wear.end());
+    s.wear_lobes = wear_lobes(result.wear, a.n_theta(), a.n_axial());
+  }
   // A component run's clocks include its rows' output (as its reduced runs'
   // do: campaign/rubbing_run.hpp compares them).
   s.integration_seconds += s.output_seconds;

@@ -26,6 +26,7 @@
 #include <Eigen/SparseCore>
 
 #include "problem.hpp"
+#include "liner_surface.hpp"
 #include "run_monitor.hpp"
 #include "structure_contact.hpp"
 
@@ -48,6 +49,13 @@ struct FullOrderSystem {
   std::vector<int> tip_dofs;
   /// A failed contact solve stops the run as its status (else it throws).
   bool failure_is_status = false;
+  /// The abradable liner on the rigid law of `contact` (nullptr: none):
+  /// the integrator's normal law (CentralDifference::attach_liner), E with
+  /// the bars' elastic energy, W_contact the blade-and-liner work, and
+  /// W_plastic in the balance and the rows. `source` names the case in the
+  /// refusal of a mass the liner's solve cannot take (CaseError).
+  LinerSurface* liner = nullptr;
+  std::string source;
 };
 
 /// Runs `system` for the monitor's steps_requested steps from rest and

@@ -56,6 +56,9 @@ struct HistoryRow {
   /// u_2, v_2, ...) radial outward and tangential counter-clockwise [m];
   /// nullptr otherwise. Not written to history.csv (rsi sweep reads them).
   const Eigen::VectorXd* tip_displacement = nullptr;
+  /// A run with an abradable liner: W_plastic, the liner's plastic work up
+  /// to the row (a history.csv column W_plastic); nullptr otherwise.
+  const double* plastic_work = nullptr;
 };
 
 /// Receives each history row as it is produced, in order (streamed output).
@@ -142,6 +145,18 @@ struct RunSummary {
   /// interval of blade 1 (not per step), so it grows with the number of
   /// separate contacts, never with the run's length alone.
   std::vector<std::pair<double, double>> contact_intervals_blade_1;
+  /// A run with an abradable liner (summary.json's "liner" object only then).
+  bool liner = false;
+  double final_plastic_work = 0.0; ///< W_plastic at the end [force * length]
+  /// The bars' work not done by the contact force at the end
+  /// (CentralDifference::liner_unmatched_work) [force * length].
+  double liner_unmatched_work = 0.0;
+  double liner_cell_area = 0.0;     ///< A = r dtheta dz of a cell [length^2]
+  double liner_bar_stiffness = 0.0; ///< k = E A / h [force / length]
+  double max_wear_depth = 0.0;     ///< the deepest cell's wear at the end [length]
+  /// Local maxima of the wear around the circumference above half the
+  /// deepest (liner_wear.hpp), the largest over the axial rows.
+  int wear_lobes = 0;
 };
 
 } // namespace rsi

@@ -76,7 +76,7 @@ void RunMonitor::add_row(const StepState& state, double energy) {
   const HistoryRow row{state.time,          state.gap,          state.lambda,
                        energy,              state.external_work, state.contact_work,
                        state.damping_work,  state.lambda_tangential,
-                       tips ? &m_tips : nullptr};
+                       tips ? &m_tips : nullptr, state.liner ? &state.plastic_work : nullptr};
   if (m_options.history_sink) {
     const auto start = std::chrono::steady_clock::now();
     m_options.history_sink(row);
@@ -143,15 +143,18 @@ bool RunMonitor::after_step(const StepReport& r, const StepState& state,
   if (!check) return true;
   s.max_energy = std::max(s.max_energy, e);
   s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(state.external_work),
-                             std::abs(state.contact_work), std::abs(state.damping_work)});
+                             std::abs(state.contact_work), std::abs(state.damping_work),
+                             std::abs(state.plastic_work)});
+  // W_plastic is 0 without a liner (x + 0.0 is x).
   const double balance = std::abs(e - s.initial_energy - state.external_work -
-                                  state.contact_work + state.damping_work);
+                                  state.contact_work + state.damping_work + state.plastic_work);
   s.energy_balance_error = std::max(s.energy_balance_error, balance);
   if (m_rules.balance_tolerance > 0.0 && !(balance <= m_rules.balance_tolerance * s.energy_scale)) {
     std::ostringstream message;
     message.precision(6);
     message << "energy balance broken at step " << state.step << " (t = " << state.time
-            << " s): |E - E0 - W_ext - W_contact + W_damp| = " << balance << " > "
+            << " s): |E - E0 - W_ext - W_contact + W_damp"
+            << (state.liner ? " + W_plastic" : "") << "| = " << balance << " > "
             << m_rules.balance_tolerance << " x scale " << s.energy_scale
             << " (instability or solver trouble)";
     return stop(message.str());

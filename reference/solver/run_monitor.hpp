@@ -68,6 +68,11 @@ struct RunResult {
   /// figure of the casing deformation (paper Fig. 9).
   Eigen::VectorXd casing_u_at_first_contact;
   Eigen::VectorXd casing_v_at_first_contact;
+  /// A run with an abradable liner: each cell's wear at the end, cell j
+  /// n_theta + i (row j, sector i of the casing frame); empty otherwise.
+  std::vector<double> wear;
+  int wear_n_theta = 0;
+  int wear_n_axial = 0;
 };
 
 /// What a run exposes after each step.
@@ -88,6 +93,10 @@ struct StepState {
   /// Read on output steps when RunOptions::tip_displacement is set; may be
   /// nullptr otherwise.
   const TipDisplacementSource* tips = nullptr;
+  /// With an abradable liner: W_plastic up to the step, subtracted in the
+  /// balance and written in the rows; absent (false, 0) otherwise.
+  bool liner = false;
+  double plastic_work = 0.0;
 };
 
 /// Throws StabilityError unless dt < 2 / omega_max or forced; fills the

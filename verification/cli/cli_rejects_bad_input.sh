@@ -436,6 +436,11 @@ rubbing_variant rotation-type "{$rub, \"friction_coefficient\": 0.1}" ', "rotati
 rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
 rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
 rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
+# rubbing.liner: bad values refused naming the key and the range.
+lin='"thickness": 1, "young_modulus": 1000, "hardening_modulus": 0'
+rubbing_variant liner-yield "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": -1, \"cells_around\": 10}}"
+rubbing_variant liner-cells "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": 1, \"cells_around\": 0}}"
+rubbing_variant liner-z "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": 1, \"cells_around\": 10, \"z_min\": 0}}"
 expect 2 "key 'rubbing': missing (a contact run of a component needs" -- "$rsi" simulate "$work/ccx-good.json" --out "$work/out"
 # A contact node ccx expanded (a beam, shell or plane node: a row per
 # expanded node and direction) and a response node ccx created (above the
@@ -456,6 +461,9 @@ expect 2 "key 'rubbing.tip_sliding': must be \"with_rotation\" or \"against_rota
 expect 2 "key 'rubbing.response': node 99 direction 2 is not a dof of the model" -- "$rsi" simulate "$work/rubbing-response.json" --out "$work/out"
 expect 2 "key 'rubbing.revolutions': revolutions x steps_per_revolution must be at most 2147483647" -- "$rsi" simulate "$work/rubbing-steps.json" --out "$work/out"
 expect 2 "key 'rubbing.colour': unknown key" -- "$rsi" simulate "$work/rubbing-unknown.json" --out "$work/out"
+expect 2 "key 'rubbing.liner.yield_stress': must be in (0, inf) (stress), got -1" -- "$rsi" simulate "$work/rubbing-liner-yield.json" --out "$work/out"
+expect 2 "key 'rubbing.liner.cells_around': must be an integer in [1, 10000000], got 0" -- "$rsi" simulate "$work/rubbing-liner-cells.json" --out "$work/out"
+expect 2 "key 'rubbing.liner.z_max': must be given with z_min" -- "$rsi" simulate "$work/rubbing-liner-z.json" --out "$work/out"
 expect 2 "key 'component.mass': must be \"consistent\" or \"lumped\" (HRZ), got \"diagonal\"" -- "$rsi" simulate "$work/rubbing-mass.json" --out "$work/out"
 expect 2 "key 'component.rotation_effects': needs ccx to run the deck under the centrifugal load, and source.calculix_matrices names matrices already written" -- "$rsi" simulate "$work/rubbing-rotation-matrices.json" --out "$work/out"
 expect 2 "key 'component.rotation_effects': must be true or false, got 1" -- "$rsi" simulate "$work/rubbing-rotation-type.json" --out "$work/out"

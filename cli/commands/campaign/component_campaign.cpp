@@ -87,6 +87,7 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
   if (options.target_e2 > 0.0)
     throw UsageError("--target-e2: only for the paper's case; a component case's convergence.csv "
                      "lists every run's e2");
+  refuse_liner(c, "rsi campaign (its reduced runs)");
   const RubbingModel model = load_rubbing_model(c, options.load);
   const RubbingSetup& setup = model.setup();
   const std::string stage = output.open(options.out, "--out", campaign_output_set());

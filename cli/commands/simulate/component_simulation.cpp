@@ -1,6 +1,7 @@
 // rsi simulate on a component case: the rubbing run of its "rubbing" object
 // (campaign/rubbing_run.hpp) -> history.csv, summary.json.
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -25,6 +26,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
                      "response dof of its 'rubbing.response')");
   if (options.method == "full" && options.modes != 0)
     throw UsageError("--modes: only for a reduced method; drop it");
+  if (options.method != "full") refuse_liner(c, "--method " + options.method);
   // On a terminal: loading and the bases as a stage line, then the steps.
   const std::function<void(double)> terminal = terminal_progress(options.method);
   TerminalStage preparing("preparing the run (the component, " + options.method +
@@ -50,6 +52,20 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   finish_terminal_progress(terminal);
   throw_if_interrupted();
   history_file.commit();
+  if (!result.wear.empty()) {
+    // The wear profile: per cell the centre angle of its sector in the
+    // casing frame [rad], its axial row (0 first) and its depth.
+    std::string wear = "angle,row,depth\n";
+    const double pitch = 2.0 * M_PI / result.wear_n_theta;
+    char line[96];
+    for (int j = 0; j < result.wear_n_axial; ++j)
+      for (int i = 0; i < result.wear_n_theta; ++i) {
+        std::snprintf(line, sizeof line, "%.17g,%d,%.17g\n", (i + 0.5) * pitch, j,
+                      result.wear[static_cast<size_t>(j * result.wear_n_theta + i)]);
+        wear += line;
+      }
+    write_text_file(dir + "/wear.csv", wear);
+  }
   write_text_file(dir + "/summary.json", summary_json(result.summary));
   const RunSummary& s = result.summary;
   std::printf("%s: method %s%s, %d %s, %d contact nodes, %d of %d steps in %.3f s "
@@ -72,7 +88,13 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
               s.stick_contact_steps, s.slip_contact_steps);
   std::printf("energy balance error %.3e (scale %.3e); W_contact %.6e, W_damp %.6e\n",
               s.energy_balance_error, s.energy_scale, s.final_contact_work, s.final_damping_work);
-  output.announce("wrote " + options.out + "/history.csv, " + options.out + "/summary.json\n");
+  if (s.liner)
+    std::printf("liner: W_plastic %.6e, max wear depth %.6e, %d lobes, unmatched work "
+                "(bars' work not done by the contact force) %.6e\n",
+                s.final_plastic_work, s.max_wear_depth, s.wear_lobes,
+                s.liner_unmatched_work);
+  output.announce("wrote " + options.out + "/history.csv, " + options.out + "/summary.json" +
+                  (s.liner ? ", " + options.out + "/wear.csv" : std::string()) + "\n");
   if (s.completed) return 0;
   // Exit 3 says what to change: the step (above its limit only with
   // --force) or the contact's friction.

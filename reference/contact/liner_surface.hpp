@@ -1,0 +1,71 @@
+#pragma once
+// The abradable liner (abradable_liner.hpp) on the rigid casing of a
+// node-to-rigid-surface contact (rigid_surface_contact.hpp), as the
+// full-order step meets it (docs/decisions.md, "The abradable liner").
+//
+// Cells. Contact node c of polar angle phi_c and axial coordinate
+// z_c = a . X_c (undeformed, as the rigid law's frame) is over the cell of
+// angle theta = Omega t + phi_c (the gap phase: the liner and the oval are
+// both fixed to the casing, so the wear lobes lie where the oval closes)
+// and row axial_row(z_c); a node outside [z_min, z_max] is refused at
+// construction (std::invalid_argument naming the node).
+//
+// The normal problem. With g~ the rigid law's predicted gap to the unworn
+// surface at t_{n+1} and p the cell's wear, the indentation past the worn
+// surface is delta~ = -g~ - p; with c = W_nn the node's normal Delassus
+// compliance (dt^2 / m on a lumped mass), the force is the liner's compliant
+// solve F = F_bar(delta~ - c F) (AbradableLiner::compliant_force), exact in
+// closed form. Two nodes over one cell in one step solve in turn, the second
+// from the state the first left (the cell is pushed twice in the step).
+//
+// Step protocol: begin_step(); respond() per node in node order; then
+// commit_step() once the step's contact problem is final (the cells' states
+// become those of the responses, the plastic work is added, the elastic
+// energy sum F^2 / (2 k) of the step's bars kept for the energy balance).
+//
+// Units: the model's. Owns the liner (states), references the rigid law
+// (which must outlive it).
+
+#include <vector>
+
+#include "abradable_liner.hpp"
+#include "rigid_surface_contact.hpp"
+
+namespace rsi {
+
+class LinerSurface {
+public:
+  /// Throws std::invalid_argument for bad liner parameters or a contact node
+  /// outside the liner's axial extent (naming the node's index and z).
+  LinerSurface(const RigidSurfaceContact& law, const LinerGeometry& geometry,
+               const LinerMaterial& material);
+
+  const AbradableLiner& liner() const { return m_liner; }
+  const RigidSurfaceContact& law() const { return m_law; }
+  /// The cell under contact node c at time t.
+  int cell(int contact, double t) const;
+
+  void begin_step();
+  /// The compliant solve of node c at t_next (header) from the cell's state
+  /// as this step left it; remembered for commit_step().
+  LinerBarResponse respond(int contact, double t_next, double rigid_gap, double compliance);
+  /// Keeps the step's responses (header).
+  void commit_step();
+
+  /// Sum of F^2 / (2 k) over the last committed step's responses.
+  double elastic_energy() const { return m_elastic_energy; }
+  double plastic_work() const { return m_liner.plastic_work(); }
+
+private:
+  struct Pending {
+    int cell = 0;
+    LinerBarResponse response;
+  };
+  const RigidSurfaceContact& m_law;
+  AbradableLiner m_liner;
+  std::vector<int> m_rows;
+  std::vector<Pending> m_pending;
+  double m_elastic_energy = 0.0;
+};
+
+} // namespace rsi
