@@ -204,6 +204,13 @@ TEST(Problem, GmshBladeCases) {
   expect_component("blade3d.json", {4101, 0, 0, 0.0, 0.0, 1.0, false});
   // component.mass: lumped in the rubbing case.
   expect_component("blade3d-rubbing.json", {4101, 16, 11, 0.05, 1.0, 1.0, true});
+  EXPECT_TRUE(load_problem(case_path("blade3d-rubbing.json"), {"", cache_dir()}).casing.tip_growth.empty());
+  // The same with rotation effects: K(Omega) at 1344 rad/s and each contact
+  // node's static growth, outward (the centrifugal load pulls the tip out).
+  expect_component("blade3d-rubbing-rotating.json", {4101, 16, 11, 0.05, 1.0, 1.0, true});
+  const Problem rotating = load_problem(case_path("blade3d-rubbing-rotating.json"), {"", cache_dir()});
+  ASSERT_EQ(rotating.casing.tip_growth.size(), 16u);
+  for (double g : rotating.casing.tip_growth) EXPECT_GT(g, 0.0);
 }
 
 // Rotor 37 (shared/external/rotor37/README.md): 61,098 dofs, 16 contact
@@ -235,7 +242,8 @@ TEST(Problem, EveryCaseFileIsCovered) {
   const std::map<std::string, std::string> covered = {
       {"batailly2007.json", "paper"},        {"batailly2007-36el.json", "paper"},
       {"batailly2007-72el.json", "paper"},   {"blade3d.json", "component"},
-      {"blade3d-rubbing.json", "component"}, {"rotor37.json", "component"},
+      {"blade3d-rubbing.json", "component"}, {"blade3d-rubbing-rotating.json", "component"},
+      {"rotor37.json", "component"},
       {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"}};
   int files = 0;
   for (const fs::directory_entry& entry : fs::directory_iterator(RSI_SOURCE_DIR "/data/cases")) {
