@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "campbell_crossings.hpp"
 #include "case_file.hpp"
 #include "failure_advice.hpp"
 #include "interruption_flag.hpp"
@@ -25,6 +26,9 @@ namespace {
 constexpr int blade_frequencies = 5;
 /// Engine orders of interaction_lines.csv: 1 .. this.
 constexpr int engine_orders = 10;
+/// With rotation effects, the Campbell grid's speeds at most (the sweep's
+/// own when fewer): each is one eigensolve of the full model.
+constexpr int campbell_grid = 41;
 
 struct PreparedRun {
   ComponentSweepRun run;
@@ -70,8 +74,10 @@ std::vector<double> natural_frequencies(const RubbingModel& model, const Prepare
 
 class ComponentSweepPoints : public SweepPoints {
 public:
-  ComponentSweepPoints(RubbingModel model, ComponentSweep sweep, std::vector<PreparedRun> runs)
-      : m_model(std::move(model)), m_sweep(std::move(sweep)), m_runs(std::move(runs)) {}
+  ComponentSweepPoints(RubbingModel model, ComponentSweep sweep, std::vector<PreparedRun> runs,
+                       std::shared_ptr<const RotationFit> rotation)
+      : m_model(std::move(model)), m_sweep(std::move(sweep)), m_runs(std::move(runs)),
+        m_rotation(std::move(rotation)) {}
 
   const std::vector<double>& speeds() const override { return m_sweep.speeds; }
   int n_runs() const override { return static_cast<int>(m_runs.size()); }
@@ -100,8 +106,16 @@ public:
     // The casing law of this speed, for g0_c(t) (the runs build their own).
     const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
                                           : ImposedGap::constant(setup.gap);
-    const RigidSurfaceContact casing(rigid_surface_nodes(m_model.component(), m_model.contact_nodes()),
-                                     gap, speed, setup.friction_coefficient,
+    // With rotation effects the model at this speed; the indicators' radial
+    // tip displacement is then measured from the static deflected tip
+    // (the casing law's g0_c(t) - growth_c).
+    std::optional<RubbingModel> spinning;
+    if (m_rotation) spinning = model_at(speed);
+    const RubbingModel& model = spinning ? *spinning : m_model;
+    std::vector<RigidSurfaceNode> nodes = rigid_surface_nodes(model.component(), model.contact_nodes());
+    for (size_t k = 0; k < model.problem.casing.tip_growth.size(); ++k)
+      nodes[k].growth = model.problem.casing.tip_growth[k];
+    const RigidSurfaceContact casing(std::move(nodes), gap, speed, setup.friction_coefficient,
                                      setup.sliding_against_rotation ? -speed : speed,
                                      m_model.component().rotation_axis);
     RubbingIndicatorAccumulator indicators(casing, m_sweep.transient_revolutions * period,
@@ -119,7 +133,7 @@ public:
       if (inject_failure)
         throw std::runtime_error("injected failure (RSI_SWEEP_FAIL_SPEED, for the tests)");
       const RubbingRun result =
-          run_rubbing(m_model, options, [&](const HistoryRow& row, double response) {
+          run_rubbing(model, options, [&](const HistoryRow& row, double response) {
             indicators.add(row, response);
           });
       out.seconds = result.summary.wall_seconds;
@@ -144,6 +158,7 @@ public:
   }
 
   std::vector<std::pair<std::string, std::string>> side_files() const override {
+    if (m_rotation) return rotating_side_files();
     std::string lines = "run,mode,blade_hz,engine_order,casing_harmonic,speed_rad_s\n";
     const bool oval = m_model.setup().oval_gap;
     const double sign = m_sweep.speeds.front() > 0.0 ? 1.0 : -1.0;
@@ -217,28 +232,103 @@ private:
     return row + "\n";
   }
 
+  /// The model at `speed` by the rotation fit: K(Omega), the mass at rest,
+  /// each contact node's static growth in the gap.
+  RubbingModel model_at(double speed) const {
+    RubbingModel at = m_model;
+    RotatingComponent rotating = rotating_component_at(*m_rotation, speed);
+    Component& component = at.problem.structures.front();
+    component.stiffness = std::move(rotating.component.stiffness);
+    component.mass = std::move(rotating.component.mass);
+    at.problem.contact.rotation_speed = speed;
+    at.problem.casing.tip_growth.clear();
+    for (int node : at.contact_nodes())
+      at.problem.casing.tip_growth.push_back(radial_growth(component, rotating.deflection, node));
+    return at;
+  }
+
+  /// campbell.csv (the full model's lowest frequencies on a grid over the
+  /// sweep's speeds) and interaction_lines.csv (each engine order's
+  /// crossings with them, at the crossing speed, the same for every run).
+  std::vector<std::pair<std::string, std::string>> rotating_side_files() const {
+    std::vector<double> grid;
+    const double low = std::abs(m_sweep.speeds.front()), high = std::abs(m_sweep.speeds.back());
+    const double sign = m_sweep.speeds.front() > 0.0 ? 1.0 : -1.0;
+    if (static_cast<int>(m_sweep.speeds.size()) <= campbell_grid) {
+      for (double w : m_sweep.speeds) grid.push_back(std::abs(w));
+    } else {
+      for (int i = 0; i < campbell_grid; ++i)
+        grid.push_back(std::min(low, high) + std::abs(high - low) * i / (campbell_grid - 1));
+    }
+    std::sort(grid.begin(), grid.end());
+    grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+    const int count = std::min(blade_frequencies, m_model.component().n_dofs() - 1);
+    Eigen::MatrixXd hz(static_cast<Eigen::Index>(grid.size()), count);
+    std::string campbell = "speed_rad_s,mode,frequency_hz\n";
+    for (size_t g = 0; g < grid.size(); ++g) {
+      const RotatingComponent at = rotating_component_at(*m_rotation, grid[g]);
+      const Modes modes = lowest_modes(at.component.stiffness, at.component.mass, count);
+      for (int i = 0; i < count; ++i) {
+        hz(static_cast<Eigen::Index>(g), i) = modes.frequency_hz(i);
+        append_csv_number(campbell, sign * grid[g]);
+        campbell += "," + std::to_string(i + 1) + ",";
+        append_csv_number(campbell, modes.frequency_hz(i));
+        campbell += "\n";
+      }
+    }
+    std::string lines = "run,mode,blade_hz,engine_order,casing_harmonic,speed_rad_s\n";
+    const bool oval = m_model.setup().oval_gap;
+    if (grid.size() >= 2)
+      for (const PreparedRun& r : m_runs)
+        for (const CampbellCrossing& c : campbell_crossings(grid, hz, engine_orders)) {
+          lines += run_name_of(r.run) + "," + std::to_string(c.mode) + ",";
+          append_csv_number(lines, c.frequency_hz);
+          lines += "," + std::to_string(c.engine_order) + "," +
+                   (oval && c.engine_order % 2 == 0 ? "1" : "0") + ",";
+          append_csv_number(lines, sign * c.speed_rad_s);
+          lines += "\n";
+        }
+    return {{"interaction_lines.csv", lines}, {"campbell.csv", campbell}};
+  }
+
   RubbingModel m_model;
   ComponentSweep m_sweep;
   std::vector<PreparedRun> m_runs;
+  std::shared_ptr<const RotationFit> m_rotation; ///< null: the blade at rest at every speed
 };
 
 } // namespace
 
+std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const ComponentSweep& sweep) {
+  double top = 0.0;
+  for (double w : sweep.speeds) top = std::max(top, std::abs(w));
+  if (sweep.rotation_fit_speeds.empty()) {
+    std::vector<double> speeds;
+    for (double fraction : {0.1, 0.2, 0.4, 0.6, 0.8, 1.0}) speeds.push_back(fraction * top);
+    return speeds;
+  }
+  if (top > sweep.rotation_fit_speeds.back())
+    throw CaseError(c.case_path + ": key 'sweep.rotation_fit_speeds': the sweep reaches " +
+                    std::to_string(top) + " rad/s, above the highest fit speed " +
+                    std::to_string(sweep.rotation_fit_speeds.back()) +
+                    " rad/s (the model does not extrapolate)");
+  return sweep.rotation_fit_speeds;
+}
+
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
-                                                    const std::string& where) {
-  if (model.component_case().rotation_effects)
-    throw CaseError(model.problem.source +
-                    ": key 'component.rotation_effects': a sweep builds one model for every "
-                    "speed, and rotation effects need the blade's K(Omega) and tip growth at "
-                    "each speed (one ccx run a speed), which rsi sweep does not build yet: run "
-                    "rsi simulate at each speed, or set rotation_effects to false for a map of "
-                    "the blade at rest");
+                                                    const std::string& where,
+                                                    std::shared_ptr<const RotationFit> rotation) {
+  if (model.component_case().rotation_effects && !rotation)
+    throw std::logic_error("component_sweep_points: rotation effects need the rotation fit");
   std::vector<PreparedRun> runs(sweep.runs.size());
   for (size_t j = 0; j < runs.size(); ++j) {
     PreparedRun& r = runs[j];
     r.run = sweep.runs[j];
     r.coordinates = model.component().n_dofs();
-    if (r.run.method != "full") {
+    if (rotation && r.run.method != "full") {
+      // Built at each speed: the schedule's weight counts the boundary and the modes.
+      r.coordinates = static_cast<int>(model.component().boundary.size()) + r.run.modes;
+    } else if (r.run.method != "full") {
       const Clock::time_point t = Clock::now();
       try {
         r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
@@ -249,10 +339,10 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
       r.basis_seconds = seconds_since(t);
       r.coordinates = r.basis->n_reduced();
     }
-    r.frequencies_hz = natural_frequencies(model, r);
+    if (!rotation) r.frequencies_hz = natural_frequencies(model, r);
   }
   return std::make_unique<ComponentSweepPoints>(std::move(model), std::move(sweep),
-                                                std::move(runs));
+                                                std::move(runs), std::move(rotation));
 }
 
 } // namespace rsi

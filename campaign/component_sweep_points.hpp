@@ -18,6 +18,7 @@
 #include <string>
 
 #include "component_case.hpp"
+#include "rotation_fit.hpp"
 #include "rubbing_run.hpp"
 #include "sweep_points.hpp"
 
@@ -27,7 +28,22 @@ namespace rsi {
 /// builds each reduced run's basis once for every speed, and the natural
 /// frequencies. A refused reduction throws ReductionError prefixed by
 /// `where` (the key or option that lists the runs) and the run's name.
+///
+/// With rotation effects (`rotation`, fitted over the sweep's speeds) each
+/// speed's run uses K(Omega), the mass at rest and the tip growth of the
+/// parametric model (rotation_fit.hpp), and builds its basis at that speed;
+/// interaction_lines.csv then holds the crossings of the engine orders with
+/// the rotating blade's lowest frequencies (campbell_crossings.hpp, the
+/// full model's on a grid of speeds, written to campbell.csv), each at its
+/// crossing speed, for every run.
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
-                                                    const std::string& where);
+                                                    const std::string& where,
+                                                    std::shared_ptr<const RotationFit> rotation = {});
+
+/// The fit speeds of a sweep with rotation effects: sweep.rotation_fit_speeds,
+/// or 0.1, 0.2, 0.4, 0.6, 0.8, 1 times its largest |Omega| (the spacing
+/// measured in reports/rotation-fit). Throws CaseError naming
+/// sweep.rotation_fit_speeds if a speed of the sweep is above the highest.
+std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const ComponentSweep& sweep);
 
 } // namespace rsi

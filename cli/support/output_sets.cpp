@@ -36,7 +36,7 @@ OutputSet campaign_output_set() {
 }
 
 OutputSet sweep_output_set() {
-  return {"sweep.csv", "interaction_lines.csv", "sweep_summary.json",
+  return {"sweep.csv", "interaction_lines.csv", "campbell.csv", "sweep_summary.json",
           // reports/make_sweep_report.py
           "sweep_map.png", "sweep_campbell.png", "sweep_report.md"};
 }

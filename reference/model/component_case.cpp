@@ -347,6 +347,23 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
         "transient_revolutions",
         {0.0, out.revolutions, false, true, "(below sweep.revolutions, " +
                                                 std::to_string(out.revolutions) + ")"});
+  sweep.claim("rotation_fit_speeds");
+  if (value.contains("rotation_fit_speeds")) {
+    const json& fj = value.at("rotation_fit_speeds");
+    if (!fj.is_array() || fj.size() != 6)
+      sweep.fail(sweep.full("rotation_fit_speeds"),
+                 "must be 6 ascending speeds in (0, 1e5) rad/s (2 deflection shapes: "
+                 "m + m(m+1)/2 + 1 matrices), got " + fj.dump().substr(0, 80));
+    for (const json& v : fj) {
+      const bool ascending = out.rotation_fit_speeds.empty() ||
+                             (v.is_number() && v.get<double>() > out.rotation_fit_speeds.back());
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() <= 0.0 ||
+          v.get<double>() >= 1e5 || !ascending)
+        sweep.fail(sweep.full("rotation_fit_speeds"),
+                   "must be 6 ascending speeds in (0, 1e5) rad/s, got " + fj.dump().substr(0, 80));
+      out.rotation_fit_speeds.push_back(v.get<double>());
+    }
+  }
   sweep.claim("runs");
   const json& runs = value.contains("runs") ? value.at("runs") : json();
   if (!runs.is_array() || runs.empty())

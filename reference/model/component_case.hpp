@@ -119,6 +119,10 @@ struct ComponentSweep {
   double revolutions = 0.0;   ///< each run's length, > 0 (absent: rubbing.revolutions)
   double transient_revolutions = 0.0; ///< in [0, revolutions)
   std::vector<ComponentSweepRun> runs; ///< one a (method, mode count), in the file's order
+  /// With component.rotation_effects: the 6 speeds K(Omega) is fitted at
+  /// (rotation_fit.hpp), ascending, > 0; empty: 0.1, 0.2, 0.4, 0.6, 0.8, 1
+  /// times the sweep's largest |Omega|.
+  std::vector<double> rotation_fit_speeds;
   bool present() const { return !speeds.empty(); }
 };
 

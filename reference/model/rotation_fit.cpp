@@ -17,7 +17,8 @@ namespace {
 /// Below this, the deflections at the m highest fit speeds do not span m
 /// shapes (relative to the largest R diagonal entry of their QR).
 constexpr double shape_rank_tolerance = 1e-8;
-/// Above this cond_2 the p x p solve loses more than half the digits.
+/// Singular values of the scaled feature matrix below 1/this of the largest
+/// are dropped: the p x p solve keeps at least half the digits.
 constexpr double largest_feature_condition = 1e8;
 
 std::string speed_text(double speed) {
@@ -102,15 +103,23 @@ RotationFit fit_rotation(const ComponentCase& c, const ComponentLoadOptions& opt
   // condition of the scaled matrix is what the solve loses.
   const Eigen::VectorXd scale = features.cwiseAbs().colwise().maxCoeff().transpose();
   const Eigen::MatrixXd scaled = features * scale.cwiseInverse().asDiagonal();
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled);
+  // A stiff part deflects in proportion to s, so a_k, a_k a_l and s are
+  // nearly dependent (a two-brick deck: cond 1e10): the minimum-norm
+  // solution over the singular values above 1e-8 of the largest (rank
+  // kept in feature_rank) fits what the speeds can tell apart.
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(scaled, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  svd.setThreshold(1.0 / largest_feature_condition);
   const Eigen::VectorXd sv = svd.singularValues();
-  fit.feature_condition = sv(sv.size() - 1) > 0.0 ? sv(0) / sv(sv.size() - 1) : INFINITY;
-  if (!(fit.feature_condition < largest_feature_condition))
-    throw CaseError(c.case_path + ": the rotation fit's feature matrix is ill-conditioned (cond " +
-                    std::to_string(fit.feature_condition) + " with its columns scaled, allowed "
-                    "below 1e8): spread the fit speeds over the range");
-  // C_q = sum_j (F^-1)_{qj} (K_j - K0): (1) at the fit speeds, entry by entry.
-  const Eigen::MatrixXd inverse = scale.cwiseInverse().asDiagonal() * scaled.fullPivLu().inverse();
+  fit.feature_rank = static_cast<int>(svd.rank());
+  if (fit.feature_rank == 0)
+    throw CaseError(c.case_path + ": the rotation fit's speeds leave the stiffness unchanged "
+                    "(no deflection): rotation effects have nothing to fit");
+  fit.feature_condition = sv(0) / sv(fit.feature_rank - 1);
+  Eigen::VectorXd kept = Eigen::VectorXd::Zero(p);
+  for (int k = 0; k < fit.feature_rank; ++k) kept(k) = 1.0 / sv(k);
+  // C_q = sum_j (F^+)_{qj} (K_j - K0): (1) at the fit speeds, entry by entry.
+  const Eigen::MatrixXd inverse = scale.cwiseInverse().asDiagonal() * svd.matrixV() *
+                                  kept.asDiagonal() * svd.matrixU().transpose();
   fit.terms.assign(static_cast<size_t>(p), Eigen::SparseMatrix<double>(n, n));
   for (int q = 0; q < p; ++q)
     for (int j = 0; j < p; ++j)

@@ -12,7 +12,9 @@
 // orthonormal: ccx's deflections at the m highest fit speeds), u = V a,
 //   K(Omega) = K0 + sum_k a_k L_k + sum_{k<=l} a_k a_l Q_kl + s R,   (1)
 // p = m + m(m+1)/2 + 1 unknown matrices, fitted exactly at p fit speeds
-// (a p x p solve, entry by entry). What (1) leaves out is the deflection's
+// (a p x p solve, entry by entry; a minimum-norm one over the singular
+// values kept when the features are nearly dependent, as for a stiff part
+// whose deflection is linear in s). What (1) leaves out is the deflection's
 // part outside V and the error of a(Omega) between fit speeds; a(Omega) is
 // a natural cubic spline in s through (0, 0) and the fit speeds' a, and so
 // is the whole deflection u(Omega) (the same cardinal weights, so
@@ -43,7 +45,10 @@ struct RotationFit {
   Eigen::MatrixXd node_deflections;
   /// L_1..L_m, Q_11, Q_12, .., Q_mm, R: the order of features().
   std::vector<Eigen::SparseMatrix<double>> terms;
-  double feature_condition = 0.0; ///< cond_2 of the p x p feature matrix, columns scaled to 1
+  /// cond_2 of the p x p feature matrix, columns scaled to 1, over the
+  /// singular values kept (those above 1e-8 of the largest).
+  double feature_condition = 0.0;
+  int feature_rank = 0; ///< p, or fewer for a part whose deflection is ~ linear in s
   int n_shapes() const { return static_cast<int>(shapes.cols()); }
 };
 
@@ -57,7 +62,7 @@ Eigen::VectorXd rotation_fit_features(const Eigen::VectorXd& a, double speed);
 /// Runs ccx (cached) at each fit speed (rotating_component) and fits (1).
 /// Throws CaseError for a speed count other than rotation_fit_speed_count,
 /// speeds not ascending or not in (0, 1e5), fit speeds whose deflections
-/// do not span m shapes, or a singular feature matrix; ImportError as
+/// do not span m shapes, or no deflection at all; ImportError as
 /// rotating_component.
 RotationFit fit_rotation(const ComponentCase& c, const ComponentLoadOptions& options,
                          const std::vector<double>& fit_speeds, int shapes);

@@ -226,6 +226,11 @@ SWEEP_BASE = copy.deepcopy(BASE)
 SWEEP_BASE["sweep"] = {"speeds": [1000, 1344], "revolutions": 0.3, "transient_revolutions": 0.1,
                        "runs": [{"method": "cb", "modes": [2]}]}
 
+# The same with rotation effects: K(Omega) fitted at the default speeds
+# (0.1 .. 1 x 1344 rad/s); the variant fits at other speeds.
+SWEEP_ROTATING = copy.deepcopy(SWEEP_BASE)
+SWEEP_ROTATING["component"]["rotation_effects"] = True
+
 # An abradable liner on the brick (lumped mass: the liner's node-by-node
 # solve refuses a consistent one); the brick's run with it is refused all
 # the same (EXEMPT below), so only adding the key is walked.
@@ -272,6 +277,8 @@ WALK = {
                                            with_value("sweep.speeds", {"from": 900, "to": 1300, "count": 3})]),
     "sweep.revolutions": (SWEEP_BASE, "sweep", [with_value("sweep.revolutions", 0.25)]),
     "sweep.transient_revolutions": (SWEEP_BASE, "sweep", [with_value("sweep.transient_revolutions", 0.15)]),
+    "sweep.rotation_fit_speeds": (SWEEP_ROTATING, "sweep",
+                                  [with_value("sweep.rotation_fit_speeds", [200, 400, 800, 1200, 1344, 2000])]),
     "sweep.runs": (SWEEP_BASE, "sweep", [with_value("sweep.runs", [{"method": "macneal", "modes": [2]}]),
                                          with_value("sweep.runs", [{"method": "full"}])]),
     "damping": (BASE, "rubbing", [lambda c: removing(c, "damping")]),

@@ -118,7 +118,9 @@ rsi::RotationFit without_node(const rsi::RotationFit& f, size_t drop) {
 }
 
 TEST_F(RotationFitBlade, ReproducesCcxAtTheFitSpeeds) {
-  std::printf("feature matrix cond_2 = %.3e\n", fit.feature_condition);
+  std::printf("feature matrix cond_2 = %.3e, rank %d of 6\n", fit.feature_condition, fit.feature_rank);
+  // The blade deflects nonlinearly in s (it stiffens): all 6 features count.
+  EXPECT_EQ(fit.feature_rank, 6);
   for (size_t j = 0; j < fit_speeds.size(); ++j) {
     const rsi::RotatingComponent ccx = rsi::rotating_component(c, options, fit_speeds[j]);
     const rsi::RotatingComponent model = rsi::rotating_component_at(fit, fit_speeds[j]);

@@ -109,7 +109,11 @@ std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptio
   RubbingModel model = load_rubbing_model(c, options.load);
   const std::string where = options.method.empty() ? c.case_path + ": key 'sweep.runs': run "
                                                    : "--method " + options.method + ": ";
-  return component_sweep_points(std::move(model), std::move(sweep), where);
+  std::shared_ptr<const RotationFit> rotation;
+  if (c.rotation_effects)
+    rotation = std::make_shared<const RotationFit>(
+        fit_rotation(c, options.load, sweep_rotation_fit_speeds(c, sweep), 2));
+  return component_sweep_points(std::move(model), std::move(sweep), where, std::move(rotation));
 }
 
 } // namespace rsi
