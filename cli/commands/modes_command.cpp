@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +21,7 @@
 #include "speeds_option.hpp"
 #include "usage_error.hpp"
 #include "rotating_component.hpp"
+#include "rotation_fit.hpp"
 #include "staged_output.hpp"
 #include "terminal_progress.hpp"
 
@@ -32,6 +34,9 @@ struct ModesOptions {
   int count = 50;
   double speed = 0.0; ///< Omega [rad/s]: K(Omega) of a component case
   std::string speeds; ///< a Campbell diagram over these speeds (speeds_option.hpp)
+  /// With speeds: K(Omega) from the rotation fit at these 6 speeds (rotation_fit.hpp)
+  /// instead of a ccx run at each speed.
+  std::string rotation_fit;
   std::string out = "out/modes";
   ComponentLoadOptions load;
 };
@@ -71,6 +76,12 @@ ModesCommand::ModesCommand(CLI::App& app)
                   "ascending, at least two, in [0, 100000) -> DIR/campbell.csv and the engine "
                   "orders 1-10's crossings DIR/crossings.csv")
       ->excludes("--speed");
+  m_command
+      .add_option("--rotation-fit", modes.rotation_fit,
+                  "with --speeds: K(Omega) at each speed from the parametric model fitted at "
+                  "these 6 speeds W1,...,W6 [rad/s], ascending, > 0, the last at least the "
+                  "highest of --speeds (6 ccx runs in all, cached) instead of a ccx run a speed")
+      ->needs("--speeds");
   m_command.add_option("--out", modes.out, "output directory")
       ->capture_default_str()
       ->check(nonempty_path());
@@ -161,12 +172,46 @@ int ModesCommand::run_campbell(StagedOutput& output) {
   const auto start = std::chrono::steady_clock::now();
   Eigen::MatrixXd hz(speeds.size(), options.count);
   std::string name;
+  // With --rotation-fit: the component at rest once, the fit, then every
+  // speed's K(Omega) from it.
+  std::optional<ComponentInput> rest;
+  std::optional<RotationFit> fit;
+  if (!options.rotation_fit.empty()) {
+    std::vector<double> fit_speeds;
+    try {
+      fit_speeds = parse_speeds_option(options.rotation_fit, SpeedSign::non_negative);
+    } catch (const UsageError& e) {
+      throw UsageError(std::string("--rotation-fit: ") + e.what());
+    }
+    if (fit_speeds.size() != 6 || fit_speeds.front() <= 0.0)
+      throw UsageError("--rotation-fit: 6 ascending speeds above 0 rad/s (2 deflection shapes), "
+                       "got '" + options.rotation_fit + "'");
+    if (speeds.back() > fit_speeds.back())
+      throw UsageError("--rotation-fit: the highest fit speed must be at least the highest of "
+                       "--speeds (" + std::to_string(speeds.back()) + " rad/s), got '" +
+                       options.rotation_fit + "'");
+    rest = load_component_input(options.case_path, options.part, options.load, 0.0, "--speeds");
+    if (!rest->component_case)
+      throw UsageError("--speeds: a Campbell diagram is for a component case (a CalculiX deck or "
+                       "the gmsh blade); " + options.case_path + " is the paper's 2D case");
+    TerminalStage stage("modes: the rotation fit (ccx at " + options.rotation_fit + " rad/s)");
+    fit = fit_rotation(*rest->component_case, options.load, fit_speeds, 2);
+    stage.done();
+  }
   for (size_t s = 0; s < speeds.size(); ++s) {
     TerminalStage stage("modes: " + std::to_string(options.count) + " modes at " +
                         std::to_string(speeds[s]) + " rad/s (" + std::to_string(s + 1) + " of " +
                         std::to_string(speeds.size()) + ")");
-    const ComponentInput input =
-        load_component_input(options.case_path, options.part, options.load, speeds[s], "--speeds");
+    ComponentInput input;
+    if (fit) {
+      input = *rest;
+      RotatingComponent at = rotating_component_at(*fit, speeds[s]);
+      input.component = std::move(at.component);
+      input.speed = speeds[s];
+      input.deflection = std::move(at.deflection);
+    } else {
+      input = load_component_input(options.case_path, options.part, options.load, speeds[s], "--speeds");
+    }
     if (!input.component_case)
       throw UsageError("--speeds: a Campbell diagram is for a component case (a CalculiX deck or "
                        "the gmsh blade); " + options.case_path + " is the paper's 2D case");
@@ -194,10 +239,12 @@ int ModesCommand::run_campbell(StagedOutput& output) {
   write_text_file(dir + "/crossings.csv", table.str());
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: %s, %d modes at %zu speeds from %g to %g rad/s in %.1f s (K(Omega) from ccx "
-              "at each speed, cached)\n",
+  std::printf("%s: %s, %d modes at %zu speeds from %g to %g rad/s in %.1f s (K(Omega) %s)\n",
               options.case_path.c_str(), name.c_str(), options.count, speeds.size(),
-              speeds.front(), speeds.back(), seconds);
+              speeds.front(), speeds.back(), seconds,
+              fit ? ("from the rotation fit at " + options.rotation_fit + " rad/s, feature rank " +
+                     std::to_string(fit->feature_rank)).c_str()
+                  : "from ccx at each speed, cached");
   std::printf("%6s %8s %10s %10s  engine-order crossings (mode i = the i-th lowest frequency at "
               "each speed; located by linear interpolation between grid speeds)\n",
               "mode", "order", "rad/s", "Hz");

@@ -15,7 +15,13 @@
 #   bounded by arithmetic: 1e-6 is 30 times the K bound, and the count of
 #   steps in contact must be equal);
 # - a sweep above the highest fit speed: exit 2 naming
-#   sweep.rotation_fit_speeds; fit speeds not ascending: exit 2.
+#   sweep.rotation_fit_speeds; fit speeds not ascending: exit 2;
+# - `rsi modes --speeds 1000,1344 --rotation-fit ...`: at 1344 rad/s (a fit
+#   speed) the frequencies are `rsi modes --speed 1344`'s (ccx's own K)
+#   within the uncertainty modes.csv claims for them (K differs by 2e-14 of
+#   its largest entry, below the 5e-14 rounding that uncertainty covers);
+#   --rotation-fit without --speeds, with 5 speeds, or below the highest of
+#   --speeds: exit 2 naming --rotation-fit.
 # Skipped (exit 77) without gmsh or ccx; the MPI part needs mpirun.
 # Usage: sweep_rotating.sh RSI SOURCE_DIR [CCX_CACHE]
 set -u
@@ -96,6 +102,36 @@ expect2() { # DESCRIPTION WORD-THE-MESSAGE-NAMES CASE
 }
 expect2 "a speed above the highest fit speed" "sweep.rotation_fit_speeds" "$work/above.json"
 expect2 "fit speeds not ascending" "sweep.rotation_fit_speeds" "$work/unsorted.json"
+
+fit=200,400,800,1200,1344,2000
+"$rsi" modes "$work/single.json" --speeds 1000,1344 --count 5 --rotation-fit $fit --ccx-cache "$cache" \
+  --out "$work/campbell" >"$work/log4" 2>&1 || { fail "modes --rotation-fit exited $?"; cat "$work/log4"; }
+"$rsi" modes "$work/single.json" --speed 1344 --count 5 --ccx-cache "$cache" \
+  --out "$work/modes1344" >"$work/log5" 2>&1 || { fail "modes --speed 1344 exited $?"; cat "$work/log5"; }
+/usr/bin/python3 - "$work/campbell/campbell.csv" "$work/modes1344/modes.csv" <<'PY' || fail "the Campbell diagram from the fit at the fit speed 1344 rad/s is not ccx's"
+import csv, sys
+fit = {int(r["mode"]): float(r["frequency_hz"]) for r in csv.DictReader(open(sys.argv[1]))
+       if float(r["speed_rad_s"]) == 1344.0}
+bad = 0
+for r in csv.DictReader(open(sys.argv[2])):
+    i, f, u = int(r["index"]), float(r["frequency_hz"]), float(r["uncertainty_hz"])
+    print(f"mode {i} at 1344 rad/s: fit {fit[i]!r} Hz, ccx's K {f!r} Hz (claimed +-{u})")
+    # modes.csv prints 12 digits: its rounding is added to the claimed uncertainty.
+    if abs(fit[i] - f) > u + 1e-11 * f: bad += 1
+sys.exit(1 if bad or len(fit) != 5 else 0)
+PY
+expect2modes() { # DESCRIPTION ARGS...
+  local what=$1
+  shift
+  "$rsi" modes "$work/single.json" "$@" --ccx-cache "$cache" --out "$work/keep" >"$work/log" 2>&1
+  local s=$?
+  [ "$s" -eq 2 ] || fail "$what: exit $s, 2 expected"
+  grep -q "^rsi: error: .*--rotation-fit" "$work/log" || { fail "$what: no rsi: error line naming --rotation-fit"; cat "$work/log"; }
+  [ "$(ls -A "$work/keep")" = "notes.txt" ] || fail "$what: --out changed"
+}
+expect2modes "--rotation-fit without --speeds" --rotation-fit $fit
+expect2modes "--rotation-fit with 5 speeds" --speeds 1000,1344 --rotation-fit 200,400,800,1200,1344
+expect2modes "--rotation-fit below --speeds" --speeds 1000,2100 --rotation-fit $fit
 
 if ! command -v mpirun >/dev/null; then
   echo "MPI part skipped: no mpirun on PATH (Debian openmpi-bin); the other checks ran ($failures failed)"
