@@ -18,6 +18,7 @@
 #include "rubbing_run.hpp"
 #include "run_monitor.hpp"
 #include "run_outputs.hpp"
+#include "speed_subspace.hpp"
 
 namespace rsi {
 namespace {
@@ -33,6 +34,8 @@ constexpr int campbell_grid = 41;
 struct PreparedRun {
   ComponentSweepRun run;
   std::optional<ReducedBasis> basis; ///< reduced methods
+  /// Reduced methods with rotation effects: the subspace each speed's basis is reduced in.
+  std::shared_ptr<const SpeedSubspace> subspace;
   double basis_seconds = 0.0;
   int coordinates = 0;
   std::vector<double> frequencies_hz; ///< the lowest natural frequencies, ascending
@@ -127,11 +130,16 @@ public:
     options.revolutions_key = "sweep.revolutions";
     options.rotation_speed = speed;
     options.basis = r.basis ? &*r.basis : nullptr;
+    std::optional<ReducedBasis> at_speed;
     options.checkpoint = throw_if_interrupted;
     SweepTaskResult out;
     try {
       if (inject_failure)
         throw std::runtime_error("injected failure (RSI_SWEEP_FAIL_SPEED, for the tests)");
+      if (r.subspace) {
+        at_speed = reduce_at_speed(*r.subspace, *m_rotation, speed);
+        options.basis = &*at_speed;
+      }
       const RubbingRun result =
           run_rubbing(model, options, [&](const HistoryRow& row, double response) {
             indicators.add(row, response);
@@ -197,11 +205,17 @@ public:
 
   nlohmann::json run_summary(int run) const override {
     const PreparedRun& r = m_runs[static_cast<size_t>(run)];
-    return {{"method", r.run.method},
-            {"modes", r.run.modes},
-            {"basis_s", r.basis_seconds},
-            {"coordinates", r.coordinates},
-            {"natural_frequencies_hz", r.frequencies_hz}};
+    nlohmann::json summary = {{"method", r.run.method},
+                              {"modes", r.run.modes},
+                              {"basis_s", r.basis_seconds},
+                              {"coordinates", r.coordinates},
+                              {"natural_frequencies_hz", r.frequencies_hz}};
+    if (r.subspace) {
+      // The subspace once (basis_s), then a reduction inside it at each speed.
+      summary["subspace_coordinates"] = r.subspace->n_subspace();
+      summary["subspace_basis_speeds"] = r.subspace->basis_speeds;
+    }
+    return summary;
   }
 
   std::string report_script() const override { return "make_component_sweep_report.py"; }
@@ -326,7 +340,18 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
     r.run = sweep.runs[j];
     r.coordinates = model.component().n_dofs();
     if (rotation && r.run.method != "full") {
-      // Built at each speed: the schedule's weight counts the boundary and the modes.
+      // One subspace over the speeds: the method's bases at 0 and the fit
+      // speeds; each speed's basis reduced inside it (speed_subspace.hpp).
+      const Clock::time_point t = Clock::now();
+      std::vector<double> basis_speeds = {0.0};
+      basis_speeds.insert(basis_speeds.end(), rotation->fit_speeds.begin(), rotation->fit_speeds.end());
+      try {
+        r.subspace = std::make_shared<const SpeedSubspace>(
+            speed_subspace(*rotation, r.run.method, r.run.modes, basis_speeds));
+      } catch (const ReductionError& e) {
+        throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
+      }
+      r.basis_seconds = seconds_since(t);
       r.coordinates = static_cast<int>(model.component().boundary.size()) + r.run.modes;
     } else if (r.run.method != "full") {
       const Clock::time_point t = Clock::now();

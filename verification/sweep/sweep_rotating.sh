@@ -6,14 +6,17 @@
 # - sweep.csv, interaction_lines.csv and campbell.csv the same bytes with
 #   --jobs 1, --jobs 2 and under mpirun -n 2;
 # - at 1344 rad/s, a fit speed, the sweep's run is `rsi simulate`'s run of
-#   the case at 1344 rad/s (ccx's own K(1344) and growth, no fit): the fit
-#   reproduces K there to its p x p solve's rounding (test_rotation_fit:
-#   below 100 cond(F) eps = 3.6e-8, measured 2e-14) and the growth exactly
-#   (an interior spline node), so the indicators recomputed from the
-#   simulate history agree to 1e-6 relative (the response's sensitivity to
-#   a 3.6e-8 change of K over 1000 steps, with contact switching, is not
-#   bounded by arithmetic: 1e-6 is 30 times the K bound, and the count of
-#   steps in contact must be equal);
+#   the case at 1344 rad/s (ccx's own K(1344) and growth, no fit, the
+#   MacNeal basis built directly): the fit reproduces K there to its p x p
+#   solve's rounding (test_rotation_fit: below 100 cond(F) eps = 3.6e-8,
+#   measured 2e-14), the growth exactly (an interior spline node), and
+#   the sweep's basis, reduced inside the subspace of the bases at 0 and
+#   the fit speeds, is the direct one to rounding (test_speed_subspace:
+#   2.6e-10 on eigenvalues), so the indicators recomputed from the
+#   simulate history agree to 1e-6 relative (the response's sensitivity
+#   to those roundings over 1000 steps, with contact switching, is not
+#   bounded by arithmetic: 1e-6 is stated, not derived; measured 4e-11),
+#   and the count of steps in contact must be equal;
 # - a sweep above the highest fit speed: exit 2 naming
 #   sweep.rotation_fit_speeds; fit speeds not ascending: exit 2;
 # - `rsi modes --speeds 1000,1344 --rotation-fit ...`: at 1344 rad/s (a fit

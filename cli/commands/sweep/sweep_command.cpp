@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "blas_threads.hpp"
 #include "case_kinds.hpp"
 #include "command.hpp"
 #include "command_options.hpp"
@@ -169,6 +170,7 @@ double median(std::vector<double> x) {
 
 int SweepCommand::run(StagedOutput& output) {
   check_option_rules();
+  single_threaded_blas(); // rows independent of the cores a rank gets (blas_threads.hpp)
   const SweepOptions& options = m_options;
   MpiSession mpi;
   // Declared after `mpi`: an error or a signal removes the staged output
