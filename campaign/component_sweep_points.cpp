@@ -255,9 +255,15 @@ private:
     component.stiffness = std::move(rotating.component.stiffness);
     component.mass = std::move(rotating.component.mass);
     at.problem.contact.rotation_speed = speed;
+    // The gap is the clearance at rubbing.clearance_speed: the growth from there.
+    const double clearance_speed = m_model.setup().clearance_speed;
+    const Eigen::VectorXd reference =
+        clearance_speed != 0.0 ? rotating_component_at(*m_rotation, clearance_speed).deflection
+                               : Eigen::VectorXd::Zero(rotating.deflection.size());
     at.problem.casing.tip_growth.clear();
     for (int node : at.contact_nodes())
-      at.problem.casing.tip_growth.push_back(radial_growth(component, rotating.deflection, node));
+      at.problem.casing.tip_growth.push_back(radial_growth(component, rotating.deflection, node) -
+                                             radial_growth(component, reference, node));
     return at;
   }
 
@@ -314,7 +320,7 @@ private:
 } // namespace
 
 std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const ComponentSweep& sweep) {
-  double top = 0.0;
+  double top = c.rubbing ? c.rubbing->clearance_speed : 0.0;
   for (double w : sweep.speeds) top = std::max(top, std::abs(w));
   if (sweep.rotation_fit_speeds.empty()) {
     std::vector<double> speeds;
@@ -322,7 +328,8 @@ std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const Comp
     return speeds;
   }
   if (top > sweep.rotation_fit_speeds.back())
-    throw CaseError(c.case_path + ": key 'sweep.rotation_fit_speeds': the sweep reaches " +
+    throw CaseError(c.case_path + ": key 'sweep.rotation_fit_speeds': the sweep (or rubbing."
+                    "clearance_speed) reaches " +
                     std::to_string(top) + " rad/s, above the highest fit speed " +
                     std::to_string(sweep.rotation_fit_speeds.back()) +
                     " rad/s (the model does not extrapolate)");

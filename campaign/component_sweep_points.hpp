@@ -41,9 +41,10 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
                                                     std::shared_ptr<const RotationFit> rotation = {});
 
 /// The fit speeds of a sweep with rotation effects: sweep.rotation_fit_speeds,
-/// or 0.1, 0.2, 0.4, 0.6, 0.8, 1 times its largest |Omega| (the spacing
-/// measured in reports/rotation-fit). Throws CaseError naming
-/// sweep.rotation_fit_speeds if a speed of the sweep is above the highest.
+/// or 0.1, 0.2, 0.4, 0.6, 0.8, 1 times its largest |Omega| or
+/// rubbing.clearance_speed (the spacing measured in reports/rotation-fit).
+/// Throws CaseError naming sweep.rotation_fit_speeds if a speed of the sweep
+/// or the clearance speed is above the highest.
 std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const ComponentSweep& sweep);
 
 } // namespace rsi

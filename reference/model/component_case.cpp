@@ -209,6 +209,9 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
     r.fail(r.full("rotation_speed"), "must be nonzero, in [-100000, 100000] rad/s (its sign is "
                                      "the rotation direction about rotation_axis: > 0 "
                                      "counter-clockwise), got 0");
+  r.claim("clearance_speed");
+  if (object.contains("clearance_speed"))
+    out.clearance_speed = r.number("clearance_speed", {0.0, 1e5, true, false, "rad/s"});
   r.claim("tip_sliding");
   if (object.contains("tip_sliding")) {
     const std::string sliding = string_value(r, object, "tip_sliding");
@@ -588,6 +591,11 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   }
   top.claim("rubbing");
   if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
+  if (c.rubbing && c.rubbing->clearance_speed != 0.0 && !c.rotation_effects)
+    top.fail("rubbing.clearance_speed", "needs component.rotation_effects: true (without rotation "
+                                        "effects the tip does not grow and the gap is the same "
+                                        "at every speed), got " +
+                                            std::to_string(c.rubbing->clearance_speed) + " rad/s");
   top.claim("sweep");
   if (document.contains("sweep")) {
     if (!c.rubbing)

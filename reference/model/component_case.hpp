@@ -102,6 +102,11 @@ struct RubbingSetup {
   std::vector<RubbingRuns> campaign; ///< reduced runs of `rsi campaign`
   double full_revolutions = 0.0;    ///< the campaign's full reference window (0: none)
   std::optional<LinerSetup> liner;  ///< absent: the rigid, unworn casing
+  /// With component.rotation_effects: the speed [rad/s] at which the gap
+  /// above is the clearance (the casing and tips ground hot there): a node's
+  /// gap closes by growth(Omega) - growth(clearance_speed). 0: the clearance
+  /// at rest (cold), the whole growth closes it.
+  double clearance_speed = 0.0;
 };
 
 /// One run of a component sweep: "full" (modes 0) or a reduced method and

@@ -191,9 +191,17 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     p.casing.oval_gap = r.oval_gap;
     p.casing.gap = r.gap;
     p.casing.gap_width = r.gap_width;
-    if (deflection.size() > 0)
+    if (deflection.size() > 0) {
+      // The gap is the clearance at clearance_speed: the growth from there.
+      Eigen::VectorXd reference = Eigen::VectorXd::Zero(deflection.size());
+      if (r.clearance_speed == std::abs(r.rotation_speed))
+        reference = deflection;
+      else if (r.clearance_speed != 0.0)
+        reference = rotating_component(c, load, r.clearance_speed).deflection;
       for (int node : p.contact.contact_nodes)
-        p.casing.tip_growth.push_back(radial_growth(comp, deflection, node));
+        p.casing.tip_growth.push_back(radial_growth(comp, deflection, node) -
+                                      radial_growth(comp, reference, node));
+    }
     if (r.liner) p.casing.liner = problem_liner(c, *r.liner, comp, p.contact.contact_nodes);
     p.steps.rule = ProblemSteps::Rule::per_revolution;
     p.steps.revolutions = r.revolutions;

@@ -231,6 +231,11 @@ SWEEP_BASE["sweep"] = {"speeds": [1000, 1344], "revolutions": 0.3, "transient_re
 SWEEP_ROTATING = copy.deepcopy(SWEEP_BASE)
 SWEEP_ROTATING["component"]["rotation_effects"] = True
 
+# The brick's rubbing run with rotation effects (the clearance at rest);
+# the variant sets the clearance at a speed.
+ROTATING_BASE = copy.deepcopy(BASE)
+ROTATING_BASE["component"]["rotation_effects"] = True
+
 # An abradable liner on the brick (lumped mass: the liner's node-by-node
 # solve refuses a consistent one); the brick's run with it is refused all
 # the same (EXEMPT below), so only adding the key is walked.
@@ -251,6 +256,7 @@ WALK = {
     "component.rotation_axis": (BASE, "rubbing", [with_value("component.rotation_axis", [0, 0.6, 0.8])]),
     "component.mass": (BASE, "modes", [with_value("component.mass", "lumped")]),
     "component.rotation_effects": (BASE, "rubbing", [with_value("component.rotation_effects", True)]),
+    "rubbing.clearance_speed": (ROTATING_BASE, "rubbing", [with_value("rubbing.clearance_speed", 500.0)]),
     "modal_campaign.methods": (BASE, "modal", [with_value("modal_campaign.methods", ["cb", "macneal"])]),
     "modal_campaign.modes": (BASE, "modal", [with_value("modal_campaign.modes", [3])]),
     "modal_campaign.frequencies": (BASE, "modal", [with_value("modal_campaign.frequencies", 2)]),

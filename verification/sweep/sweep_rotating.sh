@@ -24,7 +24,12 @@
 #   within the uncertainty modes.csv claims for them (K differs by 2e-14 of
 #   its largest entry, below the 5e-14 rounding that uncertainty covers);
 #   --rotation-fit without --speeds, with 5 speeds, or below the highest of
-#   --speeds: exit 2 naming --rotation-fit.
+#   --speeds: exit 2 naming --rotation-fit;
+# - rubbing.clearance_speed = the run's speed (1344): the gap there is the
+#   case's clearance, so the gaps of the first history row (the blade at
+#   rest, u = 0) are the non-rotating case's bit for bit (g0 - (growth -
+#   growth) = g0), while at the cold clearance they are smaller by the
+#   growth; the key without rotation effects: exit 2 naming it.
 # Skipped (exit 77) without gmsh or ccx; the MPI part needs mpirun.
 # Usage: sweep_rotating.sh RSI SOURCE_DIR [CCX_CACHE]
 set -u
@@ -57,6 +62,17 @@ json.dump(v, open(out + "/above.json", "w"))
 v = copy.deepcopy(c)
 v["sweep"]["rotation_fit_speeds"] = [200, 400, 1200, 800, 1344, 2000]
 json.dump(v, open(out + "/unsorted.json", "w"))
+v = copy.deepcopy(c)
+v.pop("sweep")
+v["rubbing"]["rotation_speed"] = 1344.0
+v["rubbing"]["revolutions"] = 0.01
+json.dump(v, open(out + "/short.json", "w"))
+v["rubbing"]["clearance_speed"] = 1344.0
+json.dump(v, open(out + "/hot.json", "w"))
+v["component"]["rotation_effects"] = False
+json.dump(v, open(out + "/hot_at_rest.json", "w"))
+v["rubbing"].pop("clearance_speed")
+json.dump(v, open(out + "/at_rest.json", "w"))
 v = copy.deepcopy(c)
 v.pop("sweep")
 v["rubbing"]["rotation_speed"] = 1344.0
@@ -135,6 +151,24 @@ expect2modes() { # DESCRIPTION ARGS...
 expect2modes "--rotation-fit without --speeds" --rotation-fit $fit
 expect2modes "--rotation-fit with 5 speeds" --speeds 1000,1344 --rotation-fit 200,400,800,1200,1344
 expect2modes "--rotation-fit below --speeds" --speeds 1000,2100 --rotation-fit $fit
+
+for name in short hot at_rest; do
+  "$rsi" simulate "$work/$name.json" --method macneal --modes 20 --ccx-cache "$cache" --out "$work/sim_$name" \
+    >"$work/log_$name" 2>&1 || { fail "simulate $name exited $?"; cat "$work/log_$name"; }
+done
+/usr/bin/python3 - "$work/sim_hot/history.csv" "$work/sim_at_rest/history.csv" "$work/sim_short/history.csv" <<'PY' || fail "rubbing.clearance_speed: the first row's gaps"
+import csv, sys
+first = [next(csv.DictReader(open(f))) for f in sys.argv[1:4]]
+keys = [k for k in first[0] if k.startswith("gap_")]
+hot, rest, cold = ([float(r[k]) for k in keys] for r in first)
+print(f"first row, {len(keys)} gaps: clearance at 1344 rad/s {hot[:3]}, at rest {rest[:3]}, cold clearance {cold[:3]}")
+# g0 - (growth - growth) = g0 exactly; the cold clearance closes by the growth (> 0).
+sys.exit(0 if hot == rest and all(c < r for c, r in zip(cold, rest)) else 1)
+PY
+"$rsi" simulate "$work/hot_at_rest.json" --method macneal --modes 20 --ccx-cache "$cache" --out "$work/keep" >"$work/log" 2>&1
+s=$?
+[ "$s" -eq 2 ] || fail "clearance_speed without rotation effects: exit $s, 2 expected"
+grep -q "^rsi: error: .*rubbing.clearance_speed" "$work/log" || { fail "clearance_speed without rotation effects: no message naming the key"; cat "$work/log"; }
 
 if ! command -v mpirun >/dev/null; then
   echo "MPI part skipped: no mpirun on PATH (Debian openmpi-bin); the other checks ran ($failures failed)"
