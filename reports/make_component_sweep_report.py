@@ -4,7 +4,9 @@ DIR` on a blade rubbing on its rigid casing): the interaction map, a
 Campbell diagram of the response and sweep_report.md.
 
 Usage: make_component_sweep_report.py DIR
-Reads DIR/sweep.csv (a row per speed and run), DIR/interaction_lines.csv
+Reads DIR/sweep.csv (a row per speed and run), DIR/campbell.csv when the
+sweep had rotation effects (the blade's frequencies at each speed, drawn as
+curves), DIR/interaction_lines.csv
 (per run, the blade's lowest natural frequencies f_k and, for engine orders
 EO = 1..10, the speed 2 pi f_k / EO) and DIR/sweep_summary.json; writes
 DIR/sweep_map.png, DIR/sweep_campbell.png and DIR/sweep_report.md, each whole
@@ -85,11 +87,27 @@ def main():
         die(f"{summary_path}: {e}")
     if not rows:
         die("sweep.csv has no rows")
+    # With rotation effects: the rotating blade's frequencies at each speed
+    # (campbell.csv), and interaction_lines.csv holds the crossings.
+    campbell_path = os.path.join(out, "campbell.csv")
+    campbell = {}
+    if os.path.exists(campbell_path):
+        for r in read_csv(campbell_path, ["speed_rad_s", "mode", "frequency_hz"]):
+            campbell.setdefault(int(r["mode"]), []).append(
+                (abs(number(r["speed_rad_s"])), number(r["frequency_hz"])))
+
+    def natural_at(speed):
+        """The blade's natural frequencies at `speed` [(mode, Hz)]: campbell.csv's
+        nearest grid speed with rotation effects, else the lines' (at rest)."""
+        if campbell:
+            return [(k, min(pts, key=lambda p: abs(p[0] - speed))[1]) for k, pts in sorted(campbell.items())]
+        return sorted({(int(l["mode"]), number(l["blade_hz"])) for l in lines if l["run"] == first_run})
     units = summary.get("units", "model units")
     runs = []
     for r in rows:
         if r["run"] not in runs:
             runs.append(r["run"])
+    first_run = runs[0]
     speeds = sorted({abs(number(r["speed_rad_s"])) for r in rows})
     lo, hi = speeds[0], speeds[-1]
 
@@ -102,7 +120,6 @@ def main():
     crossings = [(abs(number(l["speed_rad_s"])), int(l["engine_order"]), int(l["mode"]),
                   number(l["blade_hz"]), l["casing_harmonic"] == "1", l["run"])
                  for l in lines if lo <= abs(number(l["speed_rad_s"])) <= hi]
-    first_run = runs[0]
     shown = [c for c in crossings if c[5] == first_run]
 
     # The map: tip displacement, contact fraction, contact force against speed.
@@ -143,10 +160,16 @@ def main():
         ax.scatter(x, f, s=[4 + 40 * (v / amax if not math.isnan(v) else 0) for v in a],
                    color=f"C{i - 1}", alpha=0.7, label=f"peak {i} of the response")
         fmax = max([fmax] + [v for v in f if not math.isnan(v)])
-    blade = sorted({(int(l["mode"]), number(l["blade_hz"])) for l in lines if l["run"] == first_run})
-    for k, f in blade:
-        ax.axhline(f, color="k", lw=0.6, ls="--")
-        ax.text(hi, f, f" f{k} {f:.0f} Hz", va="center", fontsize=7)
+    if campbell:
+        blade = [(k, pts[-1][1]) for k, pts in sorted(campbell.items())]
+        for k, pts in sorted(campbell.items()):
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], color="k", lw=0.8, ls="--")
+            ax.text(hi, pts[-1][1], f" f{k}(Omega)", va="center", fontsize=7)
+    else:
+        blade = natural_at(hi)
+        for k, f in blade:
+            ax.axhline(f, color="k", lw=0.6, ls="--")
+            ax.text(hi, f, f" f{k} {f:.0f} Hz", va="center", fontsize=7)
     fmax = max(fmax, max([f for _, f in blade] or [0.0])) * 1.05
     for eo in range(1, 11):
         casing = summary.get("gap", "").startswith("oval") and eo % 2 == 0
@@ -203,13 +226,18 @@ def main():
         note = ""
         if not math.isnan(f1[i]):
             eo = f1[i] / (x[i] / (2 * math.pi))
-            blade_run = sorted({(int(l["mode"]), number(l["blade_hz"])) for l in lines if l["run"] == run})
+            blade_run = natural_at(x[i])
             note = f"; its dominant frequency is {f1[i]:.1f} Hz = {eo:.2f} x Omega/2pi"
             if blade_run:
                 k, fk = min(blade_run, key=lambda p: abs(p[1] - f1[i]))
                 order = round(eo)
-                note += (f", nearest natural frequency f{k} = {fk:.1f} Hz, whose EO {order} line "
-                         f"crosses at {2 * math.pi * fk / order:.1f} rad/s" if order >= 1 else "")
+                at = [abs(number(l["speed_rad_s"])) for l in lines if l["run"] == run and
+                      int(l["mode"]) == k and int(l["engine_order"]) == order]
+                where = (f"{2 * math.pi * fk / order:.1f} rad/s" if not campbell else
+                         ", ".join(f"{w:.1f}" for w in at) + " rad/s" if at else "no speed of the range")
+                note += (f", nearest natural frequency f{k} = {fk:.1f} Hz"
+                         f"{' (at that speed)' if campbell else ''}, whose EO {order} line crosses "
+                         f"at {where}" if order >= 1 else "")
         md.append(f"- {run}: the largest radial tip displacement, {y[i]:.4g}, is at {x[i]:g} rad/s{note}.")
     md += ["", "## Campbell diagram", "", "![Campbell diagram](sweep_campbell.png)", ""]
     failures = summary.get("failures", [])
