@@ -33,6 +33,7 @@
 #include "case_file.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
+#include "gmsh_blade_fit.hpp"
 #include "modal_analysis.hpp"
 #include "rotating_component.hpp"
 
@@ -40,16 +41,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string missing(std::initializer_list<const char*> programs) {
-  std::string why;
-  for (const char* p : programs)
-    if (!rsi::executable_on_path(p)) why += (why.empty() ? "" : ", ") + std::string(p);
-  return why;
-}
-
 #define SKIP_WITHOUT(...)                                                                          \
   do {                                                                                             \
-    const std::string why_ = missing({__VA_ARGS__});                                               \
+    const std::string why_ = rsi::testing::missing_programs({__VA_ARGS__});                                               \
     if (!why_.empty()) {                                                                           \
       std::printf("skipped: %s not on PATH\n", why_.c_str());                                      \
       GTEST_SKIP() << why_ << " not on PATH";                                                      \

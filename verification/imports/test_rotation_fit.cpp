@@ -37,55 +37,18 @@
 #include "case_file.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
+#include "gmsh_blade_fit.hpp"
 #include "modal_analysis.hpp"
 #include "rotation_fit.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
-
-std::string missing(std::initializer_list<const char*> programs) {
-  std::string why;
-  for (const char* p : programs)
-    if (!rsi::executable_on_path(p)) why += (why.empty() ? "" : ", ") + std::string(p);
-  return why;
-}
-
-const std::string blade_case = RSI_SOURCE_DIR "/data/cases/blade3d.json";
-const std::vector<double> fit_speeds = {200.0, 400.0, 800.0, 1200.0, 1600.0, 2000.0};
+const std::vector<double>& fit_speeds = rsi::testing::blade_fit_speeds();
 constexpr double eps = 2.220446049250313e-16;
 /// ccx prints omega^2 and the displacements to 7 significant digits.
 constexpr double ccx_digits = 5e-7;
 
-class RotationFitBlade : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() {
-    const std::string why = missing({"ccx", "gmsh"});
-    if (!why.empty()) {
-      skip_reason = why + " not on PATH";
-      return;
-    }
-    dir = fs::temp_directory_path() / ("rsi-rotation-fit-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    options.ccx_cache = (dir / "cache").string();
-    c = rsi::parse_component_case(rsi::read_case_document(blade_case), blade_case);
-    fit = rsi::fit_rotation(c, options, fit_speeds, 2);
-  }
-  static void TearDownTestSuite() {
-    if (!dir.empty()) fs::remove_all(dir);
-  }
-  void SetUp() override {
-    if (!skip_reason.empty()) {
-      std::printf("skipped: %s\n", skip_reason.c_str());
-      GTEST_SKIP() << skip_reason;
-    }
-  }
-  static inline std::string skip_reason;
-  static inline fs::path dir;
-  static inline rsi::ComponentLoadOptions options;
-  static inline rsi::ComponentCase c;
-  static inline rsi::RotationFit fit;
-};
+class RotationFitBlade : public rsi::testing::GmshBladeFit {};
 
 double largest(const Eigen::SparseMatrix<double>& a) {
   double m = 0.0;

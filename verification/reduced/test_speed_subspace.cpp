@@ -36,6 +36,7 @@
 #include "case_file.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
+#include "gmsh_blade_fit.hpp"
 #include "modal_analysis.hpp"
 #include "reduction.hpp"
 #include "rotation_fit.hpp"
@@ -43,36 +44,7 @@
 
 namespace {
 
-namespace fs = std::filesystem;
-
-const std::string blade_case = RSI_SOURCE_DIR "/data/cases/blade3d.json";
-
-class SpeedSubspaceBlade : public ::testing::Test {
-protected:
-  static void SetUpTestSuite() {
-    for (const char* p : {"ccx", "gmsh"})
-      if (!rsi::executable_on_path(p)) skip_reason += std::string(p) + " not on PATH; ";
-    if (!skip_reason.empty()) return;
-    dir = fs::temp_directory_path() / ("rsi-speed-subspace-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    rsi::ComponentLoadOptions options;
-    options.ccx_cache = (dir / "cache").string();
-    const rsi::ComponentCase c = rsi::parse_component_case(rsi::read_case_document(blade_case), blade_case);
-    fit = rsi::fit_rotation(c, options, {200.0, 400.0, 800.0, 1200.0, 1600.0, 2000.0}, 2);
-  }
-  static void TearDownTestSuite() {
-    if (!dir.empty()) fs::remove_all(dir);
-  }
-  void SetUp() override {
-    if (!skip_reason.empty()) {
-      std::printf("skipped: %s\n", skip_reason.c_str());
-      GTEST_SKIP() << skip_reason;
-    }
-  }
-  static inline std::string skip_reason;
-  static inline fs::path dir;
-  static inline rsi::RotationFit fit;
-};
+class SpeedSubspaceBlade : public rsi::testing::GmshBladeFit {};
 
 /// The boundary's static stiffness: K^_bb - K^_bi K^_ii^-1 K^_ib.
 Eigen::MatrixXd boundary_stiffness(const rsi::ReducedBasis& b) {
