@@ -198,6 +198,14 @@ public:
     s["tip_sliding"] = setup.sliding_against_rotation ? "against_rotation" : "with_rotation";
     s["friction_coefficient"] = setup.friction_coefficient;
     s["modal_ratio"] = m_model.component_case().damping.modal_ratio;
+    if (m_rotation) {
+      const SpeedSubspace* subspace = campbell_subspace();
+      s["campbell_model"] = subspace ? "the " + subspace->method + "-" + std::to_string(subspace->modes) +
+                                           " run's speed subspace (" +
+                                           std::to_string(subspace->n_subspace()) +
+                                           " coordinates, Rayleigh-Ritz)"
+                                     : std::string("the full parametric model");
+    }
     s["window"] = "Hann (periodic), t >= transient, the response dof " + m_model.response_name() +
                   ", mean removed; resolution 1/(rows x output interval)";
     return s;
@@ -285,14 +293,21 @@ private:
     const int count = std::min(blade_frequencies, m_model.component().n_dofs() - 1);
     Eigen::MatrixXd hz(static_cast<Eigen::Index>(grid.size()), count);
     std::string campbell = "speed_rad_s,mode,frequency_hz\n";
+    const SpeedSubspace* subspace = campbell_subspace();
     for (size_t g = 0; g < grid.size(); ++g) {
-      const RotatingComponent at = rotating_component_at(*m_rotation, grid[g]);
-      const Modes modes = lowest_modes(at.component.stiffness, at.component.mass, count);
+      Eigen::VectorXd lambda;
+      if (subspace) {
+        lambda = subspace_eigenvalues(*subspace, *m_rotation, grid[g], count);
+      } else {
+        const RotatingComponent at = rotating_component_at(*m_rotation, grid[g]);
+        lambda = lowest_modes(at.component.stiffness, at.component.mass, count).omega_squared;
+      }
       for (int i = 0; i < count; ++i) {
-        hz(static_cast<Eigen::Index>(g), i) = modes.frequency_hz(i);
+        hz(static_cast<Eigen::Index>(g), i) =
+            std::copysign(std::sqrt(std::abs(lambda(i))), lambda(i)) / (2.0 * M_PI);
         append_csv_number(campbell, sign * grid[g]);
         campbell += "," + std::to_string(i + 1) + ",";
-        append_csv_number(campbell, modes.frequency_hz(i));
+        append_csv_number(campbell, hz(static_cast<Eigen::Index>(g), i));
         campbell += "\n";
       }
     }
@@ -309,6 +324,16 @@ private:
           lines += "\n";
         }
     return {{"interaction_lines.csv", lines}, {"campbell.csv", campbell}};
+  }
+
+  /// The Campbell diagram's model: the first reduced run's subspace (a
+  /// Rayleigh-Ritz model of the fit holding the method's bases at 0 and the
+  /// fit speeds: a dense eigenproblem of a few hundred dofs a speed), or
+  /// null: the full parametric model (one sparse eigensolve a speed).
+  const SpeedSubspace* campbell_subspace() const {
+    for (const PreparedRun& r : m_runs)
+      if (r.subspace) return r.subspace.get();
+    return nullptr;
   }
 
   RubbingModel m_model;

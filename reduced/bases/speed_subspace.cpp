@@ -1,9 +1,11 @@
 #include "speed_subspace.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SparseCore>
 
@@ -97,8 +99,8 @@ SpeedSubspace speed_subspace(const RotationFit& fit, const std::string& method, 
   return s;
 }
 
-ReducedBasis reduce_at_speed(const SpeedSubspace& subspace, const RotationFit& fit, double speed) {
-  const Clock::time_point start = Clock::now();
+Eigen::MatrixXd subspace_stiffness(const SpeedSubspace& subspace, const RotationFit& fit,
+                                   double speed) {
   Eigen::MatrixXd k = subspace.rest_stiffness;
   if (speed != 0.0) {
     const Eigen::VectorXd u = fit.node_deflections * rotation_fit_weights(fit, speed);
@@ -106,9 +108,25 @@ ReducedBasis reduce_at_speed(const SpeedSubspace& subspace, const RotationFit& f
     for (size_t q = 0; q < subspace.terms.size(); ++q)
       k += f(static_cast<Eigen::Index>(q)) * subspace.terms[q];
   }
+  return k;
+}
+
+Eigen::VectorXd subspace_eigenvalues(const SpeedSubspace& subspace, const RotationFit& fit,
+                                     double speed, int count) {
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> e(
+      subspace_stiffness(subspace, fit, speed), subspace.mass, Eigen::EigenvaluesOnly);
+  if (e.info() != Eigen::Success)
+    throw std::runtime_error("speed subspace: the dense eigensolver failed at " +
+                             std::to_string(speed) + " rad/s");
+  return e.eigenvalues().head(std::min<Eigen::Index>(count, e.eigenvalues().size()));
+}
+
+ReducedBasis reduce_at_speed(const SpeedSubspace& subspace, const RotationFit& fit, double speed) {
+  const Clock::time_point start = Clock::now();
   std::vector<int> boundary(static_cast<size_t>(subspace.n_boundary));
   for (int i = 0; i < subspace.n_boundary; ++i) boundary[static_cast<size_t>(i)] = i;
-  const Eigen::SparseMatrix<double> ks = k.sparseView(), ms = subspace.mass.sparseView();
+  const Eigen::SparseMatrix<double> ks = subspace_stiffness(subspace, fit, speed).sparseView();
+  const Eigen::SparseMatrix<double> ms = subspace.mass.sparseView();
   ReducedBasis basis = reduce(ks, ms, boundary, subspace.method, subspace.modes);
   basis.transformation = subspace.transformation * basis.transformation;
   basis.build_seconds = seconds_since(start);

@@ -50,6 +50,17 @@ struct SpeedSubspace {
 SpeedSubspace speed_subspace(const RotationFit& fit, const std::string& method, int modes,
                              const std::vector<double>& basis_speeds);
 
+/// T_g^T K(speed) T_g (r_g x r_g) by the fit's features at `speed`.
+Eigen::MatrixXd subspace_stiffness(const SpeedSubspace& subspace, const RotationFit& fit,
+                                   double speed);
+
+/// The `count` lowest eigenvalues [rad^2/s^2] of the subspace model
+/// (T_g^T K(speed) T_g, T_g^T M T_g), boundary free: Rayleigh-Ritz upper
+/// bounds of the full K(speed)'s. Throws std::runtime_error if the dense
+/// solver fails.
+Eigen::VectorXd subspace_eigenvalues(const SpeedSubspace& subspace, const RotationFit& fit,
+                                     double speed, int count);
+
 /// The method's reduced model at `speed` (|speed| at most the fit's highest
 /// speed) from the subspace: its T (n x r), K^, M^ and boundary positions
 /// as reduce() gives them, build_seconds the time at this speed.
