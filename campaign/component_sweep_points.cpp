@@ -28,7 +28,7 @@ constexpr int blade_frequencies = 5;
 /// Engine orders of interaction_lines.csv: 1 .. this.
 constexpr int engine_orders = 10;
 /// With rotation effects, the Campbell grid's speeds at most (the sweep's
-/// own when fewer): each is one eigensolve of the full model.
+/// own when fewer): each is one eigenproblem (campbell_subspace()).
 constexpr int campbell_grid = 41;
 
 struct PreparedRun {
