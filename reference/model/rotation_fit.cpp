@@ -101,7 +101,10 @@ RotationFit fit_rotation(const ComponentCase& c, const ComponentLoadOptions& opt
                           .transpose();
   // Columns equilibrated (a in mm, s in rad^2/s^2 differ by 1e6): the
   // condition of the scaled matrix is what the solve loses.
-  const Eigen::VectorXd scale = features.cwiseAbs().colwise().maxCoeff().transpose();
+  // A zero column (no deflection at all) keeps scale 1: its singular value
+  // is then 0 and the rank check below names it.
+  const Eigen::VectorXd scale = features.cwiseAbs().colwise().maxCoeff().transpose().unaryExpr(
+      [](double x) { return x > 0.0 ? x : 1.0; });
   const Eigen::MatrixXd scaled = features * scale.cwiseInverse().asDiagonal();
   // A stiff part deflects in proportion to s, so a_k, a_k a_l and s are
   // nearly dependent (a two-brick deck: cond 1e10): the minimum-norm
