@@ -265,9 +265,7 @@ private:
     at.problem.contact.rotation_speed = speed;
     // The gap is the clearance at rubbing.clearance_speed: the growth from there.
     const double clearance_speed = m_model.setup().clearance_speed;
-    const Eigen::VectorXd reference =
-        clearance_speed != 0.0 ? rotating_component_at(*m_rotation, clearance_speed).deflection
-                               : Eigen::VectorXd::Zero(rotating.deflection.size());
+    const Eigen::VectorXd reference = rotation_fit_deflection(*m_rotation, clearance_speed);
     at.problem.casing.tip_growth.clear();
     for (int node : at.contact_nodes())
       at.problem.casing.tip_growth.push_back(radial_growth(component, rotating.deflection, node) -

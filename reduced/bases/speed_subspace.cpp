@@ -103,7 +103,7 @@ Eigen::MatrixXd subspace_stiffness(const SpeedSubspace& subspace, const Rotation
                                    double speed) {
   Eigen::MatrixXd k = subspace.rest_stiffness;
   if (speed != 0.0) {
-    const Eigen::VectorXd u = fit.node_deflections * rotation_fit_weights(fit, speed);
+    const Eigen::VectorXd u = rotation_fit_deflection(fit, speed);
     const Eigen::VectorXd f = rotation_fit_features(fit.shapes.transpose() * u, speed);
     for (size_t q = 0; q < subspace.terms.size(); ++q)
       k += f(static_cast<Eigen::Index>(q)) * subspace.terms[q];

@@ -156,6 +156,11 @@ Eigen::VectorXd rotation_fit_weights(const RotationFit& fit, double speed) {
   return w;
 }
 
+Eigen::VectorXd rotation_fit_deflection(const RotationFit& fit, double speed) {
+  if (speed == 0.0) return Eigen::VectorXd::Zero(fit.rest.n_dofs());
+  return fit.node_deflections * rotation_fit_weights(fit, speed);
+}
+
 RotatingComponent rotating_component_at(const RotationFit& fit, double speed) {
   RotatingComponent rotating;
   rotating.speed = speed;
@@ -164,7 +169,7 @@ RotatingComponent rotating_component_at(const RotationFit& fit, double speed) {
     rotating.deflection = Eigen::VectorXd::Zero(fit.rest.n_dofs());
     return rotating;
   }
-  rotating.deflection = fit.node_deflections * rotation_fit_weights(fit, speed);
+  rotating.deflection = rotation_fit_deflection(fit, speed);
   const Eigen::VectorXd f =
       rotation_fit_features(fit.shapes.transpose() * rotating.deflection, speed);
   for (size_t q = 0; q < fit.terms.size(); ++q)

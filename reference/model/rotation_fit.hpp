@@ -72,6 +72,9 @@ RotationFit fit_rotation(const ComponentCase& c, const ComponentLoadOptions& opt
 /// |speed| above the highest fit speed (no extrapolation).
 Eigen::VectorXd rotation_fit_weights(const RotationFit& fit, double speed);
 
+/// u(speed) by the spline (zero at 0), without K: what the growth needs.
+Eigen::VectorXd rotation_fit_deflection(const RotationFit& fit, double speed);
+
 /// K(speed) by (1), the mass at rest, and u(speed) by the spline; at a fit
 /// speed ccx's K to the solve's rounding, at 0 the model at rest bit for bit.
 RotatingComponent rotating_component_at(const RotationFit& fit, double speed);
