@@ -97,8 +97,10 @@ public:
   }
 
   std::string csv_header() const override {
-    return "speed_rad_s,run,method,modes,status,diverged,rows,max_tip_radial,max_contact_force,"
-           "contact_fraction,energy_ratio,balance_residual,f1_hz,a1,f2_hz,a2,f3_hz,a3\n";
+    return std::string("speed_rad_s,run,method,modes,status,diverged,rows,max_tip_radial,"
+                       "max_contact_force,contact_fraction,energy_ratio,balance_residual,f1_hz,"
+                       "a1,f2_hz,a2,f3_hz,a3") +
+           (liner() ? ",max_wear_depth,wear_lobes,plastic_work\n" : "\n");
   }
 
   SweepTaskResult run(double speed, int run, bool inject_failure) const override {
@@ -150,6 +152,15 @@ public:
                                   : 0.0;
       out.row = csv_row(speed, r.run, result.summary.completed ? "completed" : "diverged",
                         indicators.finish(), residual);
+      if (liner()) {
+        // The wear the run left (its whole window, the transient included).
+        out.row.pop_back();
+        out.row += ",";
+        append_csv_number(out.row, result.summary.max_wear_depth);
+        out.row += "," + std::to_string(result.summary.wear_lobes) + ",";
+        append_csv_number(out.row, result.summary.final_plastic_work);
+        out.row += "\n";
+      }
     } catch (const Interrupted&) {
       throw;
     } catch (const std::bad_alloc&) {
@@ -162,7 +173,8 @@ public:
   }
 
   std::string failed_row(double speed, int run) const override {
-    return row_start(speed, m_runs[static_cast<size_t>(run)].run, "failed") + ",,,,,,,,,,,\n";
+    return row_start(speed, m_runs[static_cast<size_t>(run)].run, "failed") + ",,,,,,,,,,," +
+           (liner() ? ",,,\n" : "\n");
   }
 
   std::vector<std::pair<std::string, std::string>> side_files() const override {
@@ -198,6 +210,11 @@ public:
     s["tip_sliding"] = setup.sliding_against_rotation ? "against_rotation" : "with_rotation";
     s["friction_coefficient"] = setup.friction_coefficient;
     s["modal_ratio"] = m_model.component_case().damping.modal_ratio;
+    if (const std::optional<ProblemLiner>& l = m_model.problem.casing.liner)
+      s["liner"] = {{"radius", l->radius},       {"thickness", l->thickness},
+                    {"young_modulus", l->young}, {"yield_stress", l->yield},
+                    {"hardening_modulus", l->hardening}, {"cells_around", l->n_theta},
+                    {"axial_rows", l->n_axial}};
     if (m_rotation) {
       const SpeedSubspace* subspace = campbell_subspace();
       s["campbell_model"] = subspace ? "the " + subspace->method + "-" + std::to_string(subspace->modes) +
@@ -229,6 +246,9 @@ public:
   std::string report_script() const override { return "make_component_sweep_report.py"; }
 
 private:
+  /// The case wears an abradable liner: the rows carry its columns.
+  bool liner() const { return m_model.problem.casing.liner.has_value(); }
+
   static std::string row_start(double speed, const ComponentSweepRun& run,
                                const std::string& status) {
     std::string row;

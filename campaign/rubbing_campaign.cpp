@@ -45,7 +45,8 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
   return true;
 }
 
-RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref) {
+RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref,
+                                      bool same_window) {
   const size_t n = std::min(r.response.size(), ref.response.size());
   double dx2 = 0, x2 = 0, dxi = 0, xi = 0, dl2 = 0, l2 = 0, dli = 0, li = 0;
   for (size_t j = 0; j < n; ++j) {
@@ -66,6 +67,19 @@ RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const Rubbing
   e.einf_response = dxi / xi;
   e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;
   e.einf_lambda = li > 0 ? dli / li : NAN;
+  const std::vector<double>& p = r.run.wear;
+  const std::vector<double>& pr = ref.run.wear;
+  if (same_window && !p.empty() && p.size() == pr.size()) {
+    double dp2 = 0, p2 = 0, dpi = 0, pi = 0;
+    for (size_t k = 0; k < p.size(); ++k) {
+      dp2 += (p[k] - pr[k]) * (p[k] - pr[k]);
+      p2 += pr[k] * pr[k];
+      dpi = std::max(dpi, std::abs(p[k] - pr[k]));
+      pi = std::max(pi, pr[k]);
+    }
+    e.e2_wear = p2 > 0 ? std::sqrt(dp2 / p2) : NAN;
+    e.einf_wear = pi > 0 ? dpi / pi : NAN;
+  }
   return e;
 }
 

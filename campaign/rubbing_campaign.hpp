@@ -12,6 +12,10 @@
 //   einf_response = max_j |x_j - x_ref,j| / max_j |x_ref,j|,
 //   e2_lambda = ||Lambda - Lambda_ref||_F / ||Lambda_ref||_F,
 //   einf_lambda = max |Lambda - Lambda_ref| / max |Lambda_ref|.
+// With an abradable liner, the final wear profiles p (one depth a cell)
+// compare the same way, when both runs cover the same revolutions:
+//   e2_wear = ||p - p_ref||_2 / ||p_ref||_2,
+//   einf_wear = max |p - p_ref| / max p_ref.
 
 #include <cmath>
 #include <functional>
@@ -52,10 +56,13 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
 
 struct RubbingErrorNorms {
   double e2_response = NAN, einf_response = NAN, e2_lambda = NAN, einf_lambda = NAN;
+  double e2_wear = NAN, einf_wear = NAN; ///< NaN without a liner or with unequal windows
 };
 
 /// The norms above of `r` against `ref` over their common rows (NaN with
-/// none; the lambda norms NaN when the reference has no contact force).
-RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref);
+/// none; the lambda norms NaN when the reference has no contact force);
+/// the wear norms when both runs have a worn liner and `same_window`.
+RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const RubbingCampaignRun& ref,
+                                      bool same_window = false);
 
 } // namespace rsi

@@ -17,6 +17,7 @@
 #include "component_integrator.hpp"
 #include "component_run.hpp"
 #include "full_order_run.hpp"
+#include "liner_wear.hpp"
 #include "failure_advice.hpp"
 #include "modal_analysis.hpp"
 #include "modal_damping.hpp"
@@ -166,9 +167,25 @@ double run_speed(const RubbingModel& model, const RubbingRunOptions& options) {
   return options.rotation_speed != 0.0 ? options.rotation_speed : model.setup().rotation_speed;
 }
 
+/// The case's liner as the reduced solver takes it (none: absent).
+std::optional<ComponentLiner> component_liner(const Problem& problem) {
+  if (!problem.casing.liner) return std::nullopt;
+  const ProblemLiner& l = *problem.casing.liner;
+  ComponentLiner liner;
+  liner.geometry.radius = l.radius;
+  liner.geometry.thickness = l.thickness;
+  liner.geometry.n_theta = l.n_theta;
+  liner.geometry.n_axial = l.n_axial;
+  liner.geometry.z_min = l.z_min;
+  liner.geometry.z_max = l.z_max;
+  liner.material.young = l.young;
+  liner.material.yield = l.yield;
+  liner.material.hardening = l.hardening;
+  return liner;
+}
+
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
-  refuse_liner(model.component_case(), "a reduced run");
   const RubbingSetup& setup = model.setup();
   const double omega = run_speed(model, options);
   const auto t0 = std::chrono::steady_clock::now();
@@ -193,6 +210,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
                       model.problem.contact.sliding_speed_at(omega), growth);
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
+  o.liner = component_liner(model.problem); // checked by the loader (problem.cpp)
   if (model.component_case().damping.modal_ratio > 0.0)
     o.damping = modal_damping(basis, model.component_case().damping.modal_ratio);
   const double sample_dt = model.problem.steps.sample_step(omega);
@@ -231,7 +249,8 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
     }
     max_lambda = std::max(max_lambda, normal.maxCoeff());
     const HistoryRow row{sample.time,         sample.gap,          normal,     sample.energy, 0.0,
-                         sample.contact_work, sample.damping_work, &tangential};
+                         sample.contact_work, sample.damping_work, &tangential, nullptr,
+                         sample.plastic_work};
     sink(row, sample.response);
   };
   const ComponentRunSummary c =
@@ -243,6 +262,20 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   run.summary = summary_of(c, options.method, basis.n_reduced(), max_lambda, basis_seconds);
   run.summary.wall_seconds = wall_seconds;
+  if (const LinerContactSolve* liner = integrator.liner()) {
+    const AbradableCells& cells = liner->cells();
+    run.wear = cells.wear();
+    run.wear_n_theta = cells.n_theta();
+    run.wear_n_axial = cells.n_axial();
+    RunSummary& s = run.summary;
+    s.liner = true;
+    s.final_plastic_work = c.final_plastic_work;
+    s.liner_unmatched_work = c.liner_unmatched_work;
+    s.liner_cell_area = cells.area();
+    s.liner_bar_stiffness = cells.stiffness();
+    s.max_wear_depth = *std::max_element(run.wear.begin(), run.wear.end());
+    s.wear_lobes = wear_lobes(run.wear, cells.n_theta(), cells.n_axial());
+  }
   return run;
 }
 
@@ -295,17 +328,8 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
   return RubbingModel{component_problem(c, load)};
 }
 
-void refuse_liner(const ComponentCase& c, const std::string& what) {
-  if (c.rubbing && c.rubbing->liner)
-    throw CaseError(c.case_path + ": key 'rubbing.liner': " + what +
-                    " does not model the abradable liner yet (only the full-order run, "
-                    "rsi simulate --method full, does): remove the key for a rigid casing, or "
-                    "run the full-order model");
-}
-
 RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                        const ComponentRowSink& sink) {
-  if (options.method != "full") refuse_liner(model.component_case(), "--method " + options.method);
   if (options.method != "full" && options.method != "cb" && options.method != "ccm" &&
       options.method != "guyan" && options.method != "macneal")
     throw std::invalid_argument("--method: must be full, cb, ccm, guyan or macneal, got '" +

@@ -51,11 +51,6 @@ struct RubbingModel {
 /// ImportError.
 RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptions& load);
 
-/// Throws CaseError naming 'rubbing.liner' if the case has an abradable
-/// liner: only the full-order run models it yet (`what` names the run that
-/// would ignore it, e.g. "--method cb").
-void refuse_liner(const ComponentCase& c, const std::string& what);
-
 /// One history row with the response dof's displacement beside it.
 using ComponentRowSink = std::function<void(const HistoryRow& row, double response)>;
 

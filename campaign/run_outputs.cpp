@@ -165,4 +165,17 @@ std::string summary_json(const RunSummary& s) {
   return j.dump(2) + "\n";
 }
 
+std::string wear_csv(const std::vector<double>& wear, int n_theta, int n_axial) {
+  std::string out = "angle,row,depth\n";
+  const double pitch = 2.0 * M_PI / n_theta;
+  char line[96];
+  for (int j = 0; j < n_axial; ++j)
+    for (int i = 0; i < n_theta; ++i) {
+      std::snprintf(line, sizeof line, "%.17g,%d,%.17g\n", (i + 0.5) * pitch, j,
+                    wear[static_cast<size_t>(j * n_theta + i)]);
+      out += line;
+    }
+  return out;
+}
+
 } // namespace rsi

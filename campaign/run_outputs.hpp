@@ -2,6 +2,7 @@
 // history.csv and summary.json of a contact run (SPEC §5).
 
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -38,5 +39,11 @@ std::string casing_snapshot_csv(const Eigen::VectorXd& u, const Eigen::VectorXd&
 
 /// The summary as pretty-printed JSON.
 std::string summary_json(const RunSummary& summary);
+
+/// wear.csv of a run with an abradable liner: angle,row,depth per cell (the
+/// centre angle of its sector in the casing frame [rad], its axial row from
+/// 0, its wear depth), rows in order, sectors in order within a row.
+/// `wear`: n_theta x n_axial depths in cell order (row n_theta + sector).
+std::string wear_csv(const std::vector<double>& wear, int n_theta, int n_axial);
 
 } // namespace rsi

@@ -14,12 +14,30 @@ namespace {
 
 const std::string kWhere = "ComponentIntegrator: ";
 
+/// The step's contact law: the liner's bars, or Signorini on the rigid surface.
+std::unique_ptr<ComponentContactSolve> contact_solve_of(const RigidCasing& casing,
+                                                        const ComponentIntegratorOptions& options) {
+  if (!options.liner)
+    return std::make_unique<CoulombNodeSolve>(casing.n_contacts(), options.dt, options.mu,
+                                              options.coulomb, options.closing_subset);
+  LinerContactLayout layout;
+  layout.omega = casing.omega();
+  for (int c = 0; c < casing.n_contacts(); ++c) {
+    layout.polar_angle.push_back(casing.polar_angle(c));
+    layout.axial.push_back(casing.axial_coordinate(c));
+  }
+  return std::make_unique<LinerContactSolve>(
+      casing.n_contacts(), options.dt, options.mu,
+      AbradableCells(options.liner->geometry, options.liner->material), layout,
+      options.liner->solve);
+}
+
 } // namespace
 
 ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidCasing& casing,
                                          const ComponentIntegratorOptions& options)
-    : m_contact(std::make_unique<CoulombNodeSolve>(casing.n_contacts(), options.dt, options.mu,
-                                                   options.coulomb, options.closing_subset)) {
+    : m_contact(contact_solve_of(casing, options))
+    , m_liner(dynamic_cast<LinerContactSolve*>(m_contact.get())) {
   if (!(options.dt > 0.0) || !std::isfinite(options.dt))
     throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
                                 ", allowed a finite value > 0");
@@ -86,6 +104,7 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
                                 " entries, allowed " + std::to_string(m_r) + " finite entries");
   m_n = 0;
   m_lambda.setZero();
+  m_wall_work = 0.0;
   m_contact->start();
   m_rotor->start(q0);
   if (m_rotor->contact_at_next_level()) {
@@ -113,8 +132,17 @@ StepReport ComponentIntegrator::step() {
   // solved multipliers when they enforce the contact at x_{n+1}, the previous
   // ones when the step's balance is at the new level.
   const Eigen::VectorXd& lambda_n = m_rotor->contact_at_next_level() ? m_lambda : solved;
-  if (lambda_n.any())
+  if (lambda_n.any()) {
     m_contact->add_contact_work(lambda_n, m_casing->rows(), m_rotor->boundary_increment());
+    if (m_liner) {
+      // The casing surface's own move under the normal forces, for the
+      // unmatched work (liner_unmatched_work()).
+      const RigidCasing& casing = m_casing->casing();
+      for (int c = 0; c < m_nc; ++c)
+        m_wall_work -= 0.5 * lambda_n(3 * c) *
+                       (casing.imposed_gap(c, t_next) - casing.imposed_gap(c, t_next - 2.0 * m_dt));
+    }
+  }
   m_rotor->add_step_work();
   m_lambda = solved;
   m_rotor->advance();
@@ -126,6 +154,25 @@ StepReport ComponentIntegrator::step() {
                                         " s): the state is not finite (blow-up)",
                                     remedied_by({Remedy::smaller_step_safety_unforced}));
   return report;
+}
+
+double ComponentIntegrator::energy() const {
+  return m_liner ? m_rotor->energy() + m_liner->elastic_energy() : m_rotor->energy();
+}
+
+double ComponentIntegrator::contact_work() const {
+  return m_liner ? m_contact->contact_work() + m_liner->elastic_energy() + m_liner->plastic_work()
+                 : m_contact->contact_work();
+}
+
+double ComponentIntegrator::plastic_work() const {
+  return m_liner ? m_liner->plastic_work() : 0.0;
+}
+
+double ComponentIntegrator::liner_unmatched_work() const {
+  return m_liner ? (m_wall_work - m_liner->normal_work()) -
+                       (m_liner->elastic_energy() + m_liner->plastic_work())
+                 : 0.0;
 }
 
 double ComponentIntegrator::response(const Eigen::Ref<const Eigen::RowVectorXd>& row) const {

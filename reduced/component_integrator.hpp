@@ -65,9 +65,11 @@
 
 #include "component_integration_error.hpp"
 #include "component_integrator_options.hpp"
+#include "component_contact_solve.hpp"
 #include "component_rotor_part.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "coulomb_node_solve.hpp"
+#include "liner_contact_solve.hpp"
 #include "history.hpp"
 #include "reduced_basis.hpp"
 #include "reduced_stepper.hpp"
@@ -115,10 +117,23 @@ public:
   /// u_B^n), 3 nc entries (n, t1, t2 per contact).
   const Eigen::VectorXd& lambda() const override { return m_lambda; }
   const std::vector<ReducedContactState>& states() const { return m_contact->states(); }
-  /// E_{n-1/2} (after n steps) [energy unit of the component].
-  double energy() const override { return m_rotor->energy(); }
+  /// E_{n-1/2} (after n steps) [energy unit of the component]; with a liner
+  /// plus its bars' elastic energy F^2 / (2 k) of the last step.
+  double energy() const override;
   double initial_energy() const override { return m_initial_energy; }
-  double contact_work() const override { return m_contact->contact_work(); }
+  /// W_contact; with a liner plus the bars' own work by their law (elastic
+  /// energy and W_plastic), so that E = E0 + W_ext + W_contact - W_damp -
+  /// W_plastic is the blade's identity, as in the full-order run
+  /// (docs/decisions.md, "The abradable liner").
+  double contact_work() const override;
+  /// W_plastic, the liner's committed plastic work (0 without a liner).
+  double plastic_work() const;
+  /// The liner's solve, or nullptr without a liner.
+  const LinerContactSolve* liner() const { return m_liner; }
+  /// What the normal forces' trapezoid work on the moving casing surface
+  /// misses of the bars' work (as the full-order summary's
+  /// liner.unmatched_work); 0 without a liner.
+  double liner_unmatched_work() const;
   /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).
   double external_work() const override { return m_rotor->external_work(); }
   bool has_external_force() const { return m_rotor->has_external_force(); }
@@ -135,7 +150,9 @@ private:
   double m_omega_max = 0.0;
   int m_r = 0, m_nc = 0;
   int m_n = 0;
-  std::unique_ptr<CoulombNodeSolve> m_contact;
+  std::unique_ptr<ComponentContactSolve> m_contact;
+  LinerContactSolve* m_liner = nullptr; ///< m_contact when it is the liner's
+  double m_wall_work = 0.0;             ///< -sum lambda_n (g0(t_{n+1}) - g0(t_{n-1})) / 2
   std::unique_ptr<RigidCasingPart> m_casing;
   std::unique_ptr<ComponentRotorPart> m_rotor;
   Eigen::VectorXd m_lambda; ///< the multipliers of the step that produced x_n

@@ -3,11 +3,22 @@
 // the step, the friction law and its solver, the modal damping and the
 // external force f(t) = f0 + f1 cos(omega_f t + phi_f) in reduced coordinates.
 
+#include <optional>
+
 #include <Eigen/Core>
 
+#include "abradable_cells.hpp"
 #include "coulomb_gauss_seidel.hpp"
+#include "liner_contact_solve.hpp"
 
 namespace rsi {
+
+/// The abradable liner on the rigid casing (liner_contact_solve.hpp).
+struct ComponentLiner {
+  AbradableCellsGeometry geometry;
+  AbradableCellsMaterial material;
+  LinerContactSolveOptions solve;
+};
 
 struct ComponentIntegratorOptions {
   double dt = 0.0;         ///< time step [s], > 0 and finite
@@ -25,6 +36,9 @@ struct ComponentIntegratorOptions {
   Eigen::VectorXd force_harmonic; ///< f1 [force]
   double force_frequency = 0.0;   ///< omega_f [rad/s], finite
   double force_phase = 0.0;       ///< phi_f [rad], finite
+  /// The abradable liner whose bars replace Signorini (absent: the rigid,
+  /// unworn casing surface).
+  std::optional<ComponentLiner> liner;
 };
 
 } // namespace rsi

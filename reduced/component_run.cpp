@@ -102,15 +102,17 @@ public:
       const double e = integrator.energy();
       const double wc = integrator.contact_work(), wd = integrator.damping_work();
       const double we = integrator.external_work(); // 0 without a force: the same arithmetic
-      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd, std::abs(we)});
-      const double error = std::abs(e - s.initial_energy - we - wc + wd);
+      const double wp = integrator.plastic_work();  // 0 without a liner: the same arithmetic
+      s.energy_scale = std::max({s.energy_scale, std::abs(e), std::abs(wc), wd, std::abs(we), wp});
+      const double error = std::abs(e - s.initial_energy - we - wc + wd + wp);
       s.energy_balance_error = std::max(s.energy_balance_error, error);
       if (sample) record(e);
       if (!(error <= m_options.balance_tolerance * s.energy_scale)) {
         std::ostringstream m;
         m.precision(6);
         m << "energy balance broken at step " << n << " (t = " << integrator.time()
-          << " s): |E - E0 - W_ext - W_contact + W_damp| = " << error << " > "
+          << " s): |E - E0 - W_ext - W_contact + W_damp"
+          << (integrator.liner() ? " + W_plastic" : "") << "| = " << error << " > "
           << m_options.balance_tolerance << " x scale " << s.energy_scale
           << " (instability or solver trouble)";
         s.completed = false;
@@ -131,10 +133,17 @@ public:
     s.final_damping_work = m_integrator.damping_work();
     s.final_external_work = m_integrator.external_work();
     s.sweeps = m_integrator.sweeps();
+    if (const LinerContactSolve* liner = m_integrator.liner()) {
+      s.liner = true;
+      s.final_plastic_work = liner->plastic_work();
+      s.liner_unmatched_work = m_integrator.liner_unmatched_work();
+      s.max_law_residual = liner->max_law_residual();
+    }
   }
 
 private:
   void record(double energy) {
+    const double plastic = m_integrator.plastic_work();
     const ComponentSample row{m_integrator.time(),
                               m_integrator.response(m_response_row),
                               m_integrator.gap(),
@@ -142,7 +151,8 @@ private:
                               energy,
                               m_integrator.contact_work(),
                               m_integrator.damping_work(),
-                              m_integrator.external_work()};
+                              m_integrator.external_work(),
+                              m_integrator.liner() ? &plastic : nullptr};
     m_sink(row);
   }
 
@@ -167,6 +177,7 @@ void ComponentHistory::append(const ComponentSample& row) {
   contact_work.push_back(row.contact_work);
   damping_work.push_back(row.damping_work);
   external_work.push_back(row.external_work);
+  if (row.plastic_work) plastic_work.push_back(*row.plastic_work);
 }
 
 ComponentRunSummary run_component(ComponentIntegrator& integrator,

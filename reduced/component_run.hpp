@@ -11,7 +11,8 @@
 // |E - E_0 - W_ext - W_contact + W_damp| <= balance_tolerance * scale, scale
 // the largest of E, |W_ext|, |W_contact|, W_damp so far (checked every
 // energy_every steps: E costs 2 r^2; W_ext = 0 without an external force);
-// and every step the runaway test: a contact node whose normal displacement
+// (with an abradable liner, E = E0 + W_ext + W_contact - W_damp - W_plastic,
+// ComponentIntegrator::contact_work) and every step the runaway test: a contact node whose normal displacement
 // |g_c - g0_c(t)| exceeds its radius r_c has left the small-displacement
 // model (a blow-up: an unstable step grows while the balance still closes,
 // the moving casing's work growing with it; measured on the gmsh blade,
@@ -40,6 +41,8 @@ struct ComponentSample {
   double energy = 0.0;           ///< E at an energy check, NaN between
   double contact_work = 0.0, damping_work = 0.0;
   double external_work = 0.0; ///< W_ext (0 without an external force)
+  /// With an abradable liner: W_plastic up to the row; nullptr without.
+  const double* plastic_work = nullptr;
 };
 
 /// Receives every sampled row in order (a history file streams them; a
@@ -54,6 +57,7 @@ struct ComponentHistory {
   std::vector<double> energy;          ///< E at the rows that are energy checks, NaN at the others
   std::vector<double> contact_work, damping_work;
   std::vector<double> external_work; ///< W_ext (0 without an external force)
+  std::vector<double> plastic_work;  ///< W_plastic (empty without a liner)
   int n_rows() const { return static_cast<int>(time.size()); }
   /// Keeps a copy of `row`.
   void append(const ComponentSample& row);
@@ -75,6 +79,11 @@ struct ComponentRunSummary {
   double final_contact_work = 0.0, final_damping_work = 0.0;
   double final_external_work = 0.0; ///< W_ext at the end (0 without an external force)
   long sweeps = 0;
+  /// With an abradable liner (liner_contact_solve.hpp): W_plastic at the end,
+  /// the unmatched work (ComponentIntegrator::liner_unmatched_work) and the
+  /// largest relative bar-law residual of any step.
+  bool liner = false;
+  double final_plastic_work = 0.0, liner_unmatched_work = 0.0, max_law_residual = 0.0;
 };
 
 struct ComponentRunOptions {

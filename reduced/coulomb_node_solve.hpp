@@ -24,13 +24,14 @@
 
 #include <Eigen/Core>
 
+#include "component_contact_solve.hpp"
 #include "coulomb_gauss_seidel.hpp"
 #include "history.hpp"
 #include "reduced_coulomb_certificate.hpp"
 
 namespace rsi {
 
-class CoulombNodeSolve {
+class CoulombNodeSolve final : public ComponentContactSolve {
 public:
   /// nc contact nodes; dt [s] (for the messages); mu >= 0 and `options`
   /// checked by CoulombGaussSeidel (std::invalid_argument); closing_subset:
@@ -39,26 +40,26 @@ public:
                    bool closing_subset);
 
   /// W of every step's problem (3 nc square), symmetrised here.
-  void set_contact_matrix(const Eigen::MatrixXd& w);
-  const Eigen::MatrixXd& contact_matrix() const { return m_w; }
+  void set_contact_matrix(const Eigen::MatrixXd& w) override;
+  const Eigen::MatrixXd& contact_matrix() const override { return m_w; }
 
   /// Before the first step: every multiplier zero, every contact open, no work, no sweeps.
-  void start();
+  void start() override;
   /// lambda of the problem of `predicted` ([g~; s~], 3 nc) into
   /// lambda_next(); the contact fields of `report`. `step`: the step the
   /// problem belongs to (n + 1, for the message).
-  void solve(const Eigen::VectorXd& predicted, int step, StepReport& report);
+  void solve(const Eigen::VectorXd& predicted, int step, StepReport& report) override;
   /// The last solve's multipliers, 3 nc entries (n, t1, t2 per contact).
-  const Eigen::VectorXd& lambda_next() const { return m_lambda_next; }
+  const Eigen::VectorXd& lambda_next() const override { return m_lambda_next; }
   /// Each contact's state after the last solve.
-  const std::vector<ReducedContactState>& states() const { return m_state; }
+  const std::vector<ReducedContactState>& states() const override { return m_state; }
   /// W_contact += lambda_n^T B_B (u_B^{n+1} - u_B^{n-1}) / 2 (rows: B_B;
   /// increment: u_B^{n+1} - u_B^{n-1}).
   void add_contact_work(const Eigen::VectorXd& lambda_n, const Eigen::MatrixXd& rows,
-                        const Eigen::VectorXd& increment);
-  double contact_work() const { return m_contact_work; }
+                        const Eigen::VectorXd& increment) override;
+  double contact_work() const override { return m_contact_work; }
   /// Gauss-Seidel sweeps summed since start().
-  long sweeps() const { return m_sweeps; }
+  long sweeps() const override { return m_sweeps; }
 
 private:
   int m_nc;

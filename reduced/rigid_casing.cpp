@@ -95,6 +95,7 @@ RigidCasing::RigidCasing(const std::vector<Eigen::Vector3d>& positions,
     m_index.push_back(boundary_index[c]);
     m_radius.push_back(r);
     m_phi.push_back(std::atan2(s(1), s(0)));
+    m_axial.push_back(s(2));
   }
 }
 

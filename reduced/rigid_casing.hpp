@@ -101,6 +101,8 @@ public:
   const std::array<int, 3>& boundary_index(int c) const { return m_index[c]; }
   double radius(int c) const { return m_radius[c]; }
   double polar_angle(int c) const { return m_phi[c]; }
+  /// s_3 = a . x_c, the node's undeformed axial coordinate [length].
+  double axial_coordinate(int c) const { return m_axial[c]; }
   double omega() const { return m_omega; }
   double sliding_omega() const { return m_sliding_omega; }
   const CasingGap& gap_law() const { return m_gap; }
@@ -117,6 +119,7 @@ private:
   std::vector<std::array<int, 3>> m_index;
   std::vector<double> m_radius;
   std::vector<double> m_phi;
+  std::vector<double> m_axial;
   CasingGap m_gap;
   std::vector<double> m_growth;
   double m_omega = 0.0;

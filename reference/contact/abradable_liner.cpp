@@ -146,7 +146,14 @@ LinerBarResponse AbradableLiner::compliant_force(const LinerCellState& state, do
       force =
           (force_yield + m_tangent * (delta_pred - delta_yield)) / (1.0 + compliance * m_tangent);
   }
-  return bar_force(state, delta_pred - compliance * force);
+  LinerBarResponse r = bar_force(state, delta_pred - compliance * force);
+  // The force is the root itself: the bar's own at delta_pred - c F carries
+  // the rounding of that difference times k, eps c k of F for a stiff bar
+  // (c k >> 1: 2e-12 mm of gap against F / k measured on the gmsh blade at
+  // E = 1e12 MPa). The state and W_p keep the bar's (their rounding is of a
+  // length, eps delta_pred).
+  if (compliance > 0.0) r.force = force;
+  return r;
 }
 
 const LinerCellState& AbradableLiner::state(int cell) const {

@@ -62,7 +62,9 @@
 //   0 < delta_pred <= delta_Y (1 + c k)      F = k delta_pred / (1 + c k)
 //   delta_pred > delta_Y (1 + c k)           F = (F_Y + k_t (delta_pred - delta_Y)) / (1 + c k_t)
 // after which the bar law at delta = delta_pred - c F gives the state and
-// W_p. With c = 0 it is the bar law itself, bit for bit.
+// W_p; the force returned is the root F itself (the bar's force at
+// delta_pred - c F would carry eps c k of F from forming that difference).
+// With c = 0 it is the bar law itself, bit for bit.
 //
 // Assumptions: massless bars (the liner adds no mass or inertia), radial
 // only (the bar carries the normal force; no friction in the bar: the

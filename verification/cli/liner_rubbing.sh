@@ -1,44 +1,48 @@
 #!/usr/bin/env bash
-# The abradable liner in the full-order rubbing run (rubbing.liner; SPEC §9,
-# reference/contact/liner_surface.hpp), on the gmsh blade of
+# The abradable liner in the rubbing runs (rubbing.liner; SPEC §9), the
+# full-order solver's (reference/contact/liner_surface.hpp) and the reduced
+# one's (reduced/liner_contact_solve.hpp), each on its own: the gmsh blade of
 # data/cases/blade3d-rubbing.json over half a revolution (lumped mass, 16
-# contact nodes on the oval casing). Three runs: the rigid casing, a liner
-# with huge E and sigma_y (E = sigma_y = 1e12 MPa), and a soft liner
-# (E = 1e4, sigma_y = 10, H = 1e3 MPa, h = 2 mm, 200 cells around).
+# contact nodes on the oval casing). Per method (full, cb 20, macneal 20)
+# three runs: the rigid casing, a liner with huge E and sigma_y
+# (E = sigma_y = 1e12 MPa), and a soft liner (E = 1e4, sigma_y = 10,
+# H = 1e3 MPa, h = 2 mm, 200 cells around).
 #  1. The stiff liner is the rigid casing up to its compliance. Its bar is
-#     elastic (never yields): a contact node sits at the bar's compression
-#     delta = F / k past the surface, so the run's largest penetration is
-#     max F / k (the bar law, abradable_liner.hpp), to the round-off of a
-#     gap: g = g0 + e_n . u is three products and three sums rounded at eps
-#     = 2.2e-16 of terms at most U (the largest |value| among the gap and
-#     response columns), at most 6 eps U: bound 8 eps U.
+#     elastic (never yields): a contact node carrying lambda_n sits at the
+#     bar's compression lambda_n / k past the surface, row by row (every
+#     method's row holds lambda with the gap it enforces: rubbing_run.hpp),
+#     to the round-off of a gap: g = g0 + e_n . u is three products and three
+#     sums rounded at eps = 2.2e-16 of terms at most U (the largest |value|
+#     among the gap and response columns), at most 6 eps U: bound 8 eps U.
+#     (The reduced solve stops when a sweep changes lambda by 1e-14 of its
+#     largest: lambda / k moves by 1e-14 of F_max / k, far below eps U.)
 #     Each step the compliant solve puts a node F / k from where the rigid
-#     solve puts it (F = k delta~ / (1 + c k) against delta~ / c: their
-#     positions differ by c (F_rigid - F) = F / k); the undamped blade
-#     carries such a perturbation without growing it, so the gaps of the two
-#     runs differ by a few F_max / k: bound n_contacts x F_max / k (16:
-#     every node's perturbation added, none cancelling; an estimate, not a
-#     proof: the contact is nonlinear). Without the liner's compliance the
-#     penetration would be round-off (about 5e-16 in the rigid run), so the
-#     first check fails on a build that ignores the key.
+#     solve puts it; the undamped blade carries such a perturbation without
+#     growing it, so the gaps of the method's two runs differ by a few
+#     F_max / k: bound n_contacts x F_max / k (16: every node's perturbation
+#     added, none cancelling; an estimate, not a proof: the contact is
+#     nonlinear). Without the liner's compliance the penetration would be
+#     round-off (about 5e-16 in the rigid run), so the first check fails on
+#     a build that ignores the key.
 #  2. The soft liner: the energy balance E = E0 + W_ext + W_contact - W_damp
 #     - W_plastic (E with the bars' elastic energy) closes to the rigid run's
-#     tolerance (1e-8 of its scale, full_order_run.hpp) — this is the
-#     blade's discrete identity with the liner's terms in it — and the
-#     plastic work summed step by step equals its closed form from the final
-#     wear alone, W_p = sum over cells A (sigma_y p + H p^2 / (2 h))
-#     (abradable_liner.hpp: alpha = p / h, W_p telescopes), to 1e-10
-#     relative (the sum of about 1e5 step terms, each rounded at eps =
-#     2.2e-16: 1e5 x eps = 2.2e-11, times a few).
-#  3. The wear: some cell worn, W_plastic in the rows never decreasing (the
-#     cells' wear never decreases: AbradableLiner::commit refuses it), the
+#     tolerance (1e-8 of its scale) — this is the blade's discrete identity
+#     with the liner's terms in it — and the plastic work summed step by
+#     step equals its closed form from the final wear alone,
+#     W_p = sum over cells A (sigma_y p + H p^2 / (2 h)) (alpha = p / h, W_p
+#     telescopes), to 1e-10 relative (the sum of about 1e5 step terms, each
+#     rounded at eps = 2.2e-16: 1e5 x eps = 2.2e-11, times a few). The
+#     cell area and bar stiffness each solver derived from the case agree to
+#     4 eps (the same products in another order).
+#  3. The wear: some cell worn, W_plastic in the rows never decreasing, the
 #     summary's max depth equal to wear.csv's largest depth and its lobe
 #     count equal to the count of data/README.md's rule, recomputed here.
-#  4. A reduced run (--method cb) refuses the key: exit 2 naming it, no output.
-# Skipped (exit 77) without gmsh or ccx. About 10 s in Release.
-# SANITIZED = 1 (an ASan/UBSan build): the soft liner alone over 0.3
-# revolution (the first contacts come at a quarter), checks 2 to 4; the
-# comparison with the rigid casing (1) runs in Release.
+# The reduced runs' wear against the full run's is liner_campaign's
+# (data/thresholds/blade3d-rubbing-liner.json).
+# Skipped (exit 77) without gmsh or ccx. About 20 s in Release.
+# SANITIZED = 1 (an ASan/UBSan build): the soft liner alone, full and
+# macneal 20, over 0.3 revolution (the first contacts come at a quarter),
+# checks 2 and 3; the comparison with the rigid casing (1) runs in Release.
 # Usage: liner_rubbing.sh RSI SOURCE_DIR CACHE [SANITIZED]
 set -u
 rsi=$1
@@ -47,10 +51,12 @@ cache=$3
 sanitized=${4:-0}
 length=0.5
 runs="rigid stiff soft"
+methods="full cb macneal"
 if [ "$sanitized" = 1 ]; then
   length=0.3
   runs=soft
-  echo "sanitizer build: the soft liner over 0.3 revolution (checks 2-4; check 1 in Release)"
+  methods="full macneal"
+  echo "sanitizer build: the soft liner, full and macneal 20, over 0.3 revolution (checks 2-3; check 1 in Release)"
 fi
 for tool in gmsh ccx; do
   if ! command -v "$tool" >/dev/null; then
@@ -66,25 +72,23 @@ variant "$work/stiff.json" "rubbing.revolutions=$length" "rubbing.campaign.full_
   'rubbing.liner={"thickness": 2.0, "young_modulus": 1e12, "yield_stress": 1e12, "hardening_modulus": 0.0, "cells_around": 1000}'
 variant "$work/soft.json" "rubbing.revolutions=$length" "rubbing.campaign.full_revolutions=$length" \
   'rubbing.liner={"thickness": 2.0, "young_modulus": 10000.0, "yield_stress": 10.0, "hardening_modulus": 1000.0, "cells_around": 200}'
-for name in $runs; do
-  if ! "$rsi" simulate "$work/$name.json" --method full --ccx-cache "$cache" --out "$work/$name" >"$work/$name.log" 2>&1; then
-    echo "FAIL: the $name run: $(tail -n 3 "$work/$name.log")"
-    exit 1
-  fi
+for method in $methods; do
+  modes=()
+  [ "$method" = full ] || modes=(--modes 20)
+  for name in $runs; do
+    if ! "$rsi" simulate "$work/$name.json" --method "$method" "${modes[@]}" --ccx-cache "$cache" \
+        --out "$work/$method-$name" >"$work/$method-$name.log" 2>&1; then
+      echo "FAIL: the $method $name run: $(tail -n 3 "$work/$method-$name.log")"
+      exit 1
+    fi
+  done
 done
-# The reduced solvers do not model the liner: a reduced run refuses the key
-# (exit 2, naming it) and writes nothing.
-"$rsi" simulate "$work/soft.json" --method cb --modes 10 --ccx-cache "$cache" --out "$work/cb" >"$work/cb.log" 2>&1
-status=$?
-if [ "$status" -ne 2 ] || ! grep -q "rubbing.liner" "$work/cb.log" || [ -e "$work/cb" ]; then
-  echo "FAIL: --method cb with a liner: exit $status (wanted 2 naming rubbing.liner, no --out): $(tail -n 2 "$work/cb.log")"
-  exit 1
-fi
-echo "ok   --method cb with a liner refused (exit 2): $(tail -n 1 "$work/cb.log")"
-/usr/bin/python3 - "$work" "$sanitized" <<'PY'
+/usr/bin/python3 - "$work" "$sanitized" "$methods" <<'PY'
 import csv, json, sys
 work = sys.argv[1]
 sanitized = sys.argv[2] == "1"
+methods = sys.argv[3].split()
+eps = 2.220446049250313e-16
 def load(name):
     rows = list(csv.reader(open(f"{work}/{name}/history.csv")))
     return rows[0], [[float(x) for x in r] for r in rows[1:]], json.load(open(f"{work}/{name}/summary.json"))
@@ -94,55 +98,8 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what)
     failures += 0 if ok else 1
 
-if not sanitized:
-    hr, rr, sr = load("rigid")
-    hs, rs, ss = load("stiff")
-    # 1. The stiff liner against the rigid casing.
-    k = ss["liner"]["bar_stiffness"]
-    f_max = ss["max_lambda"]
-    pen = ss["max_penetration"]
-    check(ss["liner"]["plastic_work"] == 0.0, "stiff liner: never yields (W_plastic %g)" % ss["liner"]["plastic_work"])
-    # The bar law: a node in contact sits F / k past the unworn surface.
-    rel = abs(pen - f_max / k) / (f_max / k)
-    gaps = [c for c in hr if c.startswith("gap_")]
-    U = max(abs(r[hs.index(c)]) for c in gaps + [hs[1]] for r in rs)
-    eps = 2.220446049250313e-16
-    err = abs(pen - f_max / k)
-    check(err <= 8 * eps * U, "stiff liner: largest penetration %.9e against max F / k = %.9e (%.2e <= 8 eps U = %.2e)" % (pen, f_max / k, err, 8 * eps * U))
-    nc = len(gaps)
-    check(len(rr) == len(rs), "stiff liner: %d rows against the rigid run's %d" % (len(rs), len(rr)))
-    dgap = max(abs(a[hr.index(c)] - b[hs.index(c)]) for c in gaps for a, b in zip(rr, rs))
-    # n_contacts x F_max / k: each node's one-step displacement F / k, all added.
-    check(dgap <= nc * f_max / k, "stiff liner: gaps within %.3e of the rigid run's (bound %d x F_max / k = %.3e)" % (dgap, nc, nc * f_max / k))
-    resp = hr[1]
-    dresp = max(abs(a[1] - b[1]) for a, b in zip(rr, rs))
-    print("stiff liner: response %s differs from the rigid run's by %.3e" % (resp, dresp))
-# 2. The soft liner's balance and plastic work.
-hl, rl, sl = load("soft")
-scale = sl["energy_scale"]
-check(sl["completed"], "soft liner: run completed (%s)" % sl["status"])
-check(sl["energy_balance_error"] <= 1e-8 * scale,
-      "soft liner: balance with W_plastic %.3e of scale %.3e (%.2e; rigid %.2e; tolerance 1e-8)"
-      % (sl["energy_balance_error"], scale, sl["energy_balance_error"] / scale,
-         float("nan") if sanitized else sr["energy_balance_error"] / sr["energy_scale"]))
-wear = [(float(a), int(r), float(d)) for a, r, d in list(csv.reader(open(f"{work}/soft/wear.csv")))[1:]]
-A = sl["liner"]["cell_area"]
-sigma_y, H, h = 10.0, 1000.0, 2.0
-closed = sum(A * (sigma_y * p + H * p * p / (2 * h)) for _, _, p in wear)
-wp = sl["liner"]["plastic_work"]
-rel = abs(wp - closed) / closed if closed > 0 else float("inf")
-check(rel <= 1e-10, "soft liner: W_plastic %.12e against the closed form of the wear %.12e (relative %.2e <= 1e-10)" % (wp, closed, rel))
-col = hl.index("W_plastic")
-check(abs(rl[-1][col] - wp) <= 1e-12 * wp, "soft liner: the last row's W_plastic %.12e is the summary's" % rl[-1][col])
-# 3. The wear.
-depths = [d for _, _, d in wear]
-check(max(depths) > 0.0, "soft liner: worn, deepest cell %.6e" % max(depths))
-w = [r[col] for r in rl]
-drops = sum(1 for a, b in zip(w, w[1:]) if b < a)
-check(drops == 0, "soft liner: W_plastic never decreases over %d rows (%d drops)" % (len(w), drops))
-check(sl["liner"]["max_wear_depth"] == max(depths), "soft liner: summary max depth %.17g, wear.csv %.17g" % (sl["liner"]["max_wear_depth"], max(depths)))
-# The lobe rule of data/README.md, written again: runs of equal depth
-# deeper than both neighbours and than half the deepest, per row, the most.
+# The rule of data/README.md, written again: runs of equal depth deeper
+# than both neighbours and than half the deepest, per row, the most.
 def lobes(ring, deepest):
     n = len(ring)
     starts = [i for i in range(n) if ring[i] != ring[i - 1]]
@@ -154,10 +111,62 @@ def lobes(ring, deepest):
         before, after, v = ring[s - 1], ring[e], ring[s]
         count += v > before and v > after and v > deepest / 2
     return count
-rows = sorted(set(r for _, r, _ in wear))
-deepest = max(depths)
-mine = max(lobes([d for _, r, d in wear if r == j], deepest) for j in rows)
-check(sl["liner"]["wear_lobes"] == mine, "soft liner: %d lobes, recomputed %d" % (sl["liner"]["wear_lobes"], mine))
-print("unmatched work (bars' work not done by the contact force): %.6e; W_plastic %.6e" % (sl["liner"]["unmatched_work"], wp))
+
+soft_full = json.load(open(f"{work}/full-soft/summary.json"))
+for m in methods:
+    if not sanitized:
+        hr, rr, sr = load(f"{m}-rigid")
+        hs, rs, ss = load(f"{m}-stiff")
+        # 1. The stiff liner against the rigid casing.
+        k = ss["liner"]["bar_stiffness"]
+        f_max = ss["max_lambda"]
+        check(ss["liner"]["plastic_work"] == 0.0, "%s stiff liner: never yields (W_plastic %g)" % (m, ss["liner"]["plastic_work"]))
+        gaps = [c for c in hs if c.startswith("gap_")]
+        U = max(abs(r[hs.index(c)]) for c in gaps + [hs[1]] for r in rs)
+        worst, pairs = 0.0, 0
+        for r in rs:
+            for c in gaps:
+                lam = r[hs.index("lambda_" + c[4:])]
+                if lam > 0.0:
+                    worst = max(worst, abs(-r[hs.index(c)] - lam / k))
+                    pairs += 1
+        check(pairs > 0 and worst <= 8 * eps * U,
+              "%s stiff liner: -g = lambda / k in every row in contact (%d node-rows, worst %.2e <= 8 eps U = %.2e)" % (m, pairs, worst, 8 * eps * U))
+        nc = len(gaps)
+        check(len(rr) == len(rs), "%s stiff liner: %d rows against the rigid run's %d" % (m, len(rs), len(rr)))
+        dgap = max(abs(a[hr.index(c)] - b[hs.index(c)]) for c in gaps for a, b in zip(rr, rs))
+        check(dgap <= nc * f_max / k, "%s stiff liner: gaps within %.3e of the rigid run's (bound %d x F_max / k = %.3e)" % (m, dgap, nc, nc * f_max / k))
+        print("%s stiff liner: response %s differs from the rigid run's by %.3e" % (m, hr[1], max(abs(a[1] - b[1]) for a, b in zip(rr, rs))))
+    # 2. The soft liner's balance and plastic work.
+    hl, rl, sl = load(f"{m}-soft")
+    scale = sl["energy_scale"]
+    check(sl["completed"], "%s soft liner: run completed (%s)" % (m, sl["status"]))
+    check(sl["energy_balance_error"] <= 1e-8 * scale,
+          "%s soft liner: balance with W_plastic %.3e of scale %.3e (%.2e; tolerance 1e-8)"
+          % (m, sl["energy_balance_error"], scale, sl["energy_balance_error"] / scale))
+    for key in ("cell_area", "bar_stiffness"):
+        a, b = sl["liner"][key], soft_full["liner"][key]
+        check(abs(a - b) <= 4 * eps * abs(b), "%s soft liner: %s %.17g, the full run's %.17g" % (m, key, a, b))
+    wear = [(float(a), int(r), float(d)) for a, r, d in list(csv.reader(open(f"{work}/{m}-soft/wear.csv")))[1:]]
+    A = sl["liner"]["cell_area"]
+    sigma_y, H, h = 10.0, 1000.0, 2.0
+    closed = sum(A * (sigma_y * p + H * p * p / (2 * h)) for _, _, p in wear)
+    wp = sl["liner"]["plastic_work"]
+    rel = abs(wp - closed) / closed if closed > 0 else float("inf")
+    check(rel <= 1e-10, "%s soft liner: W_plastic %.12e against the closed form of the wear %.12e (relative %.2e <= 1e-10)" % (m, wp, closed, rel))
+    col = hl.index("W_plastic")
+    check(abs(rl[-1][col] - wp) <= 1e-12 * wp, "%s soft liner: the last row's W_plastic %.12e is the summary's" % (m, rl[-1][col]))
+    # 3. The wear.
+    depths = [d for _, _, d in wear]
+    check(max(depths) > 0.0, "%s soft liner: worn, deepest cell %.6e" % (m, max(depths)))
+    w = [r[col] for r in rl]
+    drops = sum(1 for a, b in zip(w, w[1:]) if b < a)
+    check(drops == 0, "%s soft liner: W_plastic never decreases over %d rows (%d drops)" % (m, len(w), drops))
+    check(sl["liner"]["max_wear_depth"] == max(depths), "%s soft liner: summary max depth %.17g, wear.csv %.17g" % (m, sl["liner"]["max_wear_depth"], max(depths)))
+    rows = sorted(set(r for _, r, _ in wear))
+    deepest = max(depths)
+    mine = max(lobes([d for _, r, d in wear if r == j], deepest) for j in rows)
+    check(sl["liner"]["wear_lobes"] == mine, "%s soft liner: %d lobes, recomputed %d" % (m, sl["liner"]["wear_lobes"], mine))
+    print("%s unmatched work (bars' work not done by the contact force): %.6e; W_plastic %.6e" % (m, sl["liner"]["unmatched_work"], wp))
 sys.exit(1 if failures else 0)
 PY

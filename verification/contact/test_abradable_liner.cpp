@@ -297,9 +297,10 @@ TEST(AbradableLiner, CompliantSolveOnEveryBranch) {
           const double kt = liner.tangent_stiffness();
           EXPECT_NEAR(r.force, (F_Y + kt * (delta_pred - delta_Y)) / (1.0 + c * kt), tol);
         }
-        // Force, state and work are the law's at the solved indentation, bit for bit.
+        // State and work are the law's at the solved indentation, bit for
+        // bit; the force is the root itself (within tol of the law's there,
+        // |F - law(dp - cF)| above).
         const LinerBarResponse at = liner.bar_force(state, r.indentation);
-        EXPECT_EQ(r.force, at.force);
         EXPECT_EQ(r.state.wear, at.state.wear);
         EXPECT_EQ(r.state.hardening, at.state.hardening);
         EXPECT_EQ(r.plastic_work, at.plastic_work);

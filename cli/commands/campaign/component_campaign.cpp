@@ -72,6 +72,9 @@ void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, const std::
   throw_if_interrupted();
   history.commit();
   write_text_file(dir + "/summary.json", summary_json(entry.run.summary));
+  if (!entry.run.wear.empty())
+    write_text_file(dir + "/wear.csv",
+                    wear_csv(entry.run.wear, entry.run.wear_n_theta, entry.run.wear_n_axial));
 }
 
 } // namespace
@@ -87,7 +90,6 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
   if (options.target_e2 > 0.0)
     throw UsageError("--target-e2: only for the paper's case; a component case's convergence.csv "
                      "lists every run's e2");
-  refuse_liner(c, "rsi campaign (its reduced runs)");
   const RubbingModel model = load_rubbing_model(c, options.load);
   const RubbingSetup& setup = model.setup();
   const std::string stage = output.open(options.out, "--out", campaign_output_set());
@@ -103,17 +105,22 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
   }
   const RubbingCampaignRun* reference =
       setup.full_revolutions > 0.0 && runs.front().error.empty() ? &runs.front() : nullptr;
+  // A liner adds its columns (a case without one keeps its bytes).
+  const bool liner = model.problem.casing.liner.has_value();
   std::ostringstream csv;
   csv.precision(10);
   csv << "method,modes,coordinates,dt,critical_dt,step_limit,steps_per_sample,steps,completed,basis_s,"
          "integration_s,us_per_step,window_revolutions,e2_response,einf_response,e2_lambda,"
          "einf_lambda,stick_slip_transitions,stick_fraction,slip_fraction,max_cone_violation,"
          "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work,"
-         "first_mode_hz\n";
+         "first_mode_hz"
+      << (liner ? ",plastic_work,max_wear_depth,wear_lobes,e2_wear,einf_wear" : "") << '\n';
   for (const RubbingCampaignRun& r : runs) {
     const RunSummary& s = r.run.summary;
     const RubbingErrorNorms e =
-        reference && r.error.empty() ? rubbing_error_norms(r, *reference) : RubbingErrorNorms{};
+        reference && r.error.empty()
+            ? rubbing_error_norms(r, *reference, setup.full_revolutions == setup.revolutions)
+            : RubbingErrorNorms{};
     const double contact_steps = static_cast<double>(s.steps) * model.contact_nodes().size();
     csv << r.method << ',' << r.modes << ',' << s.n_dofs << ',' << s.dt << ',' << s.critical_dt
         << ',' << r.run.step_limit << ',' << r.run.steps_per_sample << ',' << s.steps << ',' << (s.completed ? 1 : 0) << ','
@@ -125,10 +132,18 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
         << s.slip_contact_steps / contact_steps << ',' << s.max_cone_violation << ','
         << s.max_stick_slip_residual << ',' << s.energy_balance_error << ',' << s.energy_scale
         << ',' << s.final_contact_work << ',' << s.final_damping_work << ','
-        << r.run.first_mode_hz << '\n';
+        << r.run.first_mode_hz;
+    if (liner)
+      csv << ',' << s.final_plastic_work << ',' << s.max_wear_depth << ',' << s.wear_lobes << ','
+          << e.e2_wear << ',' << e.einf_wear;
+    csv << '\n';
     std::printf("%-8s %4d  e2 response %.4e  einf %.4e  e2 lambda %.4e  einf %.4e\n",
                 r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
                 e.einf_lambda);
+    if (liner)
+      std::printf("%-8s %4d  wear: max depth %.4e, %d lobes, W_plastic %.4e, e2 %.4e, einf %.4e\n",
+                  r.method.c_str(), r.modes, s.max_wear_depth, s.wear_lobes, s.final_plastic_work,
+                  e.e2_wear, e.einf_wear);
   }
   write_text_file(stage + "/convergence.csv", stream_text(csv));
   write_text_file(stage + "/rubbing.json", rubbing_json(model));

@@ -26,7 +26,6 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
                      "response dof of its 'rubbing.response')");
   if (options.method == "full" && options.modes != 0)
     throw UsageError("--modes: only for a reduced method; drop it");
-  if (options.method != "full") refuse_liner(c, "--method " + options.method);
   // On a terminal: loading and the bases as a stage line, then the steps.
   const std::function<void(double)> terminal = terminal_progress(options.method);
   TerminalStage preparing("preparing the run (the component, " + options.method +
@@ -52,20 +51,9 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   finish_terminal_progress(terminal);
   throw_if_interrupted();
   history_file.commit();
-  if (!result.wear.empty()) {
-    // The wear profile: per cell the centre angle of its sector in the
-    // casing frame [rad], its axial row (0 first) and its depth.
-    std::string wear = "angle,row,depth\n";
-    const double pitch = 2.0 * M_PI / result.wear_n_theta;
-    char line[96];
-    for (int j = 0; j < result.wear_n_axial; ++j)
-      for (int i = 0; i < result.wear_n_theta; ++i) {
-        std::snprintf(line, sizeof line, "%.17g,%d,%.17g\n", (i + 0.5) * pitch, j,
-                      result.wear[static_cast<size_t>(j * result.wear_n_theta + i)]);
-        wear += line;
-      }
-    write_text_file(dir + "/wear.csv", wear);
-  }
+  if (!result.wear.empty())
+    write_text_file(dir + "/wear.csv",
+                    wear_csv(result.wear, result.wear_n_theta, result.wear_n_axial));
   write_text_file(dir + "/summary.json", summary_json(result.summary));
   const RunSummary& s = result.summary;
   std::printf("%s: method %s%s, %d %s, %d contact nodes, %d of %d steps in %.3f s "

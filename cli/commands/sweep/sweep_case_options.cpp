@@ -105,7 +105,6 @@ std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptio
                     std::to_string(static_cast<long>(rows_after)) +
                     " history rows after it, fewer than the 16 the spectrum needs (sweep."
                     "revolutions x rubbing.steps_per_revolution / rubbing.output_every)");
-  refuse_liner(c, "rsi sweep");
   RubbingModel model = load_rubbing_model(c, options.load);
   const std::string where = options.method.empty() ? c.case_path + ": key 'sweep.runs': run "
                                                    : "--method " + options.method + ": ";

@@ -1,0 +1,143 @@
+#pragma once
+// The contact solve of a reduced component rubbing an abradable liner
+// (SPEC §9; issue 26 item 2), the reduced side's own: it includes nothing
+// of reference/contact (docs/decisions.md, "The abradable liner").
+//
+// Problem. [g; s] = [g~; s~] + W lambda as in component_contact_solve.hpp,
+// W dense (a mass-carrying boundary: dt^2 B M^-1 B^T; MacNeal's massless
+// one: the condensed static flexibility). Contact c lies over the cell
+// k(c) = row_c n_theta + sector(Omega t_{n+1} + phi_c) (the gap phase: the
+// liner turns with the oval, abradable_cells.hpp), and its normal law is the
+// cell's bar instead of Signorini:
+//   lambda_n,c = F_bar(state_c, delta_c),  delta_c = -g_c - p(state_c),
+// g_c the gap to the unworn surface, state_c the cell's state at the step's
+// start, or, when an earlier contact (node order) lies over the same cell in
+// this step, the state that contact's response left (two tips over one bar
+// push it in turn). Coulomb holds on top, |lambda_t,c| <= mu lambda_n,c,
+// stick s_c = 0 inside the disk, slip lambda_t,c = -mu lambda_n,c s_c/|s_c|
+// on its rim.
+//
+// Algorithm: a block Gauss-Seidel over the contacts in node order. For
+// contact c, the others held (y = [g; s] kept up to date):
+//   normal row: the exact compliant solve of its bar with c = W_nn,c, from
+//     delta~ = -(y_n - W_nn lambda_n) - p (AbradableCells::compliant);
+//   tangential pair: the exact solution of Coulomb with the threshold
+//     R = mu lambda_n just found: x = lambda_t minimises
+//     1/2 x^T W_tt x + b^T x over |x| <= R, b = y_t - W_tt lambda_t. Inside,
+//     x = -W_tt^-1 b (stick); else x = -(W_tt + nu I)^-1 b with |x| = R,
+//     nu > 0 found by Newton's method on 1/R - 1/|x(nu)| from nu = 0
+//     (Moré and Sorensen 1983: concave and increasing, so the iterates rise
+//     monotonically to the root); then s = W_tt x + b = -nu x opposes x
+//     (slip).
+// A sweep recomputes y from scratch (no round-off accumulated over sweeps)
+// and the cells' chained states from the step's start. It stops at the
+// first sweep whose largest change Delta <= relative_change x the largest
+// multiplier. With mu = 0 each row update is an exact coordinate
+// minimisation of the convex 1/2 l^T W l + g~^T l + sum_c Phi_c(lambda_n,c)
+// (Phi_c the conjugate of the bar's monotone law shifted by p; a single
+// tip per cell), so the sweeps converge (Luo and Tseng 1992); mu > 0 is a
+// perturbation of it of the size of the normal/tangential coupling of W,
+// as for the rigid casing (coulomb_gauss_seidel.hpp): not proven, and a
+// solve that does not converge in max_sweeps is REPORTED (thrown), never
+// carried on.
+// Active set: the contacts whose predicted indentation is positive or that
+// carried a force at the last step, grown (in node order) by any contact
+// the others' forces push into its cell, until none is.
+//
+// Certificate (every step, on every contact): the bar law's residual
+// |lambda_n,c - F_c|, F_c the compliant solve from
+// delta~_c = -(g_c - W_nn lambda_n,c) - p at the final y: zero exactly when
+// lambda_n,c = F_bar(state_c, -g_c - p), and, unlike
+// |lambda_n,c - F_bar(-g_c - p)|, bounded as the bar stiffens (the compliant
+// map is 1/W_nn-Lipschitz in delta~: a bar of any k leaves it at about
+// |W_c:|_1 Delta / W_nn, Delta the last sweep's change). Over the largest
+// multiplier it must be <= law_tolerance (a detector of gross trouble,
+// thrown above it). Then the cone violation, and the stick and slip
+// residuals as the rigid solve scales them. The responses committed are
+// these last compliant solves. The report's max_penetration and max_complementarity are those of
+// the gap to the UNWORN surface (-g, |lambda_n g|), as the full-order run
+// reports them: a tip in a bar sits past it.
+//
+// Commit: the step's responses become the cells' states in node order
+// (wear never decreases), their plastic work is summed; the bars' elastic
+// energy sum F^2 / (2 k) of the step is kept for the energy balance.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "abradable_cells.hpp"
+#include "component_contact_solve.hpp"
+
+namespace rsi {
+
+struct LinerContactSolveOptions {
+  int max_sweeps = 20000;         ///< >= 1
+  double relative_change = 1e-14; ///< in [0, 1)
+  double law_tolerance = 1e-8;    ///< relative bar-law residual reported as failure, in (0, 1)
+};
+
+/// Where each contact node meets the liner.
+struct LinerContactLayout {
+  std::vector<double> polar_angle; ///< phi_c [rad]
+  std::vector<double> axial;       ///< a . x_c [length], within the liner's extent
+  double omega = 0.0;              ///< the gap phase's speed [rad/s]
+};
+
+class LinerContactSolve final : public ComponentContactSolve {
+public:
+  /// Throws std::invalid_argument: a layout not of n_contacts entries, a
+  /// node outside the liner's axial extent (naming it), mu < 0 or bad options.
+  LinerContactSolve(int n_contacts, double dt, double mu, const AbradableCells& cells,
+                    const LinerContactLayout& layout, const LinerContactSolveOptions& options = {});
+
+  void set_contact_matrix(const Eigen::MatrixXd& w) override;
+  const Eigen::MatrixXd& contact_matrix() const override { return m_w; }
+  void start() override;
+  void solve(const Eigen::VectorXd& predicted, int step, StepReport& report) override;
+  const Eigen::VectorXd& lambda_next() const override { return m_lambda; }
+  const std::vector<ReducedContactState>& states() const override { return m_state; }
+  void add_contact_work(const Eigen::VectorXd& lambda_n, const Eigen::MatrixXd& rows,
+                        const Eigen::VectorXd& increment) override;
+  double contact_work() const override { return m_contact_work; }
+  long sweeps() const override { return m_sweeps; }
+
+  const AbradableCells& cells() const { return m_cells; }
+  /// The cell under contact c at time t.
+  int cell(int c, double t) const;
+  /// Sum of F^2 / (2 k) over the last step's bars.
+  double elastic_energy() const { return m_elastic_energy; }
+  double plastic_work() const { return m_cells.plastic_work(); }
+  /// The part of the contact work done by the normal multipliers.
+  double normal_work() const { return m_normal_work; }
+  /// The largest relative bar-law residual of any step.
+  double max_law_residual() const { return m_max_law_residual; }
+
+private:
+  /// One sweep over the active contacts; returns the largest change.
+  double sweep(const Eigen::VectorXd& predicted);
+  /// The state contact c's bar starts from this step (the chain of the header).
+  BarState start_state(int c) const;
+  [[noreturn]] void fail(int step, const std::string& what) const;
+
+  int m_nc;
+  double m_dt, m_mu;
+  AbradableCells m_cells;
+  LinerContactSolveOptions m_options;
+  std::vector<int> m_row;
+  std::vector<double> m_phi;
+  double m_omega;
+  Eigen::MatrixXd m_w;
+  std::vector<Eigen::Matrix2d> m_wtt;
+  Eigen::VectorXd m_lambda, m_y;
+  std::vector<ReducedContactState> m_state;
+  std::vector<int> m_cell;             ///< per contact, this step
+  std::vector<char> m_active;          ///< per contact
+  std::vector<BarResponse> m_response; ///< per contact, the last evaluation
+  double m_contact_work = 0.0, m_normal_work = 0.0, m_elastic_energy = 0.0;
+  double m_max_law_residual = 0.0;
+  long m_sweeps = 0;
+};
+
+} // namespace rsi

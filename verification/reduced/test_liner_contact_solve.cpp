@@ -1,0 +1,255 @@
+// The reduced solver's contact solve with an abradable liner
+// (reduced/liner_contact_solve) against three independent answers:
+//  1. a diagonal W with equal entries on a node's rows (a lumped mass) is the
+//     full-order run's node-by-node problem: each node's bar by the
+//     reference kernel's compliant solve (reference/contact/abradable_liner),
+//     Coulomb by the stick multiplier -s~/w projected on the disk, two nodes
+//     over one cell in turn (docs/decisions.md, "The abradable liner");
+//  2. a dense W, mu = 0 and bars that stay elastic: the problem is the linear
+//     complementarity problem (W_nn + I/k) lambda + g~ + p >= 0, lambda >= 0,
+//     complementary, solved by enumerating the active sets;
+//  3. a dense W, mu > 0 and yielding bars: the certificate (bar law, cone,
+//     stick and slip residuals) at round-off;
+// and the rigid limit: bars of huge stiffness and yield give the rigid
+// casing's multipliers (reduced/coulomb_node_solve) to within the bars'
+// compliance.
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "abradable_liner.hpp"
+#include "coulomb_node_solve.hpp"
+#include "liner_contact_solve.hpp"
+
+namespace rsi {
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+AbradableCellsGeometry geometry() {
+  AbradableCellsGeometry g;
+  g.radius = 250.0;
+  g.thickness = 2.0;
+  g.n_theta = 8;
+  g.n_axial = 1;
+  g.z_min = -10.0;
+  g.z_max = 10.0;
+  return g;
+}
+
+AbradableCellsMaterial material(double young = 1000.0, double yield = 10.0) {
+  AbradableCellsMaterial m;
+  m.young = young;
+  m.yield = yield;
+  m.hardening = 300.0;
+  return m;
+}
+
+/// nc nodes, node c at angle phi[c] (sector floor(phi / (pi/4))), all in row 0.
+LinerContactLayout layout(const std::vector<double>& phi) {
+  LinerContactLayout l;
+  l.polar_angle = phi;
+  l.axial.assign(phi.size(), 0.0);
+  l.omega = 0.0;
+  return l;
+}
+
+/// A symmetric positive definite 3 nc square W of unit-order entries with
+/// strong coupling between nodes.
+Eigen::MatrixXd dense_w(int nc, unsigned seed, double scale) {
+  std::srand(seed);
+  const Eigen::MatrixXd a = Eigen::MatrixXd::Random(3 * nc, 3 * nc);
+  return scale * (a * a.transpose() / (3.0 * nc) + 0.2 * Eigen::MatrixXd::Identity(3 * nc, 3 * nc));
+}
+
+TEST(LinerContactSolve, DiagonalWIsTheFullOrderNodeByNodeSolve) {
+  const double mu = 0.3;
+  // Nodes 1 and 2 share sector 1; nodes 0 and 3 are alone.
+  const std::vector<double> phi = {0.1, 1.0, 1.2, 3.0};
+  const int nc = 4;
+  const AbradableCellsMaterial mat = material();
+  LinerContactSolve solve(nc, 1e-3, mu, AbradableCells(geometry(), mat), layout(phi));
+  // c k from 0.2 to 2 (k = 1.96e6 N/mm): the bars yield under the predictions below.
+  const Eigen::VectorXd w_node = (Eigen::VectorXd(4) << 1e-7, 4e-7, 2e-7, 1e-6).finished();
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(3 * nc, 3 * nc);
+  for (int c = 0; c < nc; ++c) w.block(3 * c, 3 * c, 3, 3).diagonal().setConstant(w_node(c));
+  solve.set_contact_matrix(w);
+
+  LinerGeometry rg;
+  rg.radius = 250.0;
+  rg.thickness = 2.0;
+  rg.n_theta = 8;
+  rg.n_axial = 1;
+  rg.z_min = -10.0;
+  rg.z_max = 10.0;
+  LinerMaterial rm;
+  rm.young = mat.young;
+  rm.yield = mat.yield;
+  rm.hardening = mat.hardening;
+  AbradableLiner liner(rg, rm);
+
+  // Tolerance (derived in test_abradable_cells): 16 eps (1 + c k)
+  // max(F, k delta~) for the reference's cancellations and 4 eps F a
+  // plastic step for the cells' states rounding apart; here also the
+  // indentation delta~ = -g~ - p, formed by each solve its own way (the
+  // reduced one through y = g~ + W lambda, less W_nn lambda), rounds at
+  // eps (|g~| + p + c F), which the compliant map scales by k / (1 + c k):
+  // plus 16 eps k (|g~| + p + c F) / (1 + c k).
+  int plastic_steps = 0;
+  std::srand(3);
+  for (int step = 1; step <= 40; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+    for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.03; // mostly closing
+    StepReport report;
+    solve.solve(predicted, step, report);
+    // The full-order run's per-node solve (central_difference.cpp, solve_liner).
+    std::vector<std::pair<int, LinerBarResponse>> pending;
+    for (int c = 0; c < nc; ++c) {
+      const int cell = liner.angular_cell(phi[c]);
+      LinerCellState state = liner.state(cell);
+      for (const auto& [k, r] : pending)
+        if (k == cell) state = r.state;
+      const LinerBarResponse r =
+          liner.compliant_force(state, -predicted(3 * c) - state.wear, w_node(c));
+      pending.push_back({cell, r});
+      Eigen::Vector2d lt = -predicted.segment<2>(3 * c + 1) / w_node(c);
+      if (lt.norm() > mu * r.force) lt *= mu * r.force / lt.norm();
+      const double f = std::max(r.force, 1e-300);
+      const double k = solve.cells().stiffness();
+      const double delta_pred = -predicted(3 * c) - state.wear;
+      const double ck = w_node(c) * k;
+      const double tolerance =
+          16.0 * eps *
+              ((1.0 + ck) * std::max(f, k * delta_pred) +
+               k * (std::abs(predicted(3 * c)) + state.wear + w_node(c) * f) / (1.0 + ck)) +
+          4.0 * plastic_steps * eps * f;
+      EXPECT_NEAR(solve.lambda_next()(3 * c), r.force, tolerance) << "step " << step << " node " << c;
+      EXPECT_NEAR((solve.lambda_next().segment<2>(3 * c + 1) - lt).norm(), 0.0, tolerance)
+          << "step " << step << " node " << c;
+    }
+    for (const auto& [k, r] : pending) {
+      plastic_steps += r.plastic;
+      liner.commit(k, r);
+    }
+  }
+  EXPECT_GT(liner.plastic_work(), 0.0);
+  EXPECT_NEAR(solve.plastic_work(), liner.plastic_work(), 1e-12 * liner.plastic_work());
+  for (int cell = 0; cell < 8; ++cell)
+    EXPECT_NEAR(solve.cells().state(cell).wear, liner.state(cell).wear, 1e-12 * 0.05) << cell;
+}
+
+TEST(LinerContactSolve, DenseElasticFrictionlessIsTheLcp) {
+  const int nc = 5;
+  // One node per sector; a yield far above the forces: the bars stay elastic.
+  const std::vector<double> phi = {0.1, 0.9, 1.7, 2.5, 3.3};
+  AbradableCells cells(geometry(), material(1000.0, 1e9));
+  const double k = cells.stiffness();
+  const Eigen::MatrixXd w = dense_w(nc, 11, 1.0 / k); // W and 1/k of one order
+  LinerContactSolve solve(nc, 1e-3, 0.0, cells, layout(phi));
+  solve.set_contact_matrix(w);
+  Eigen::MatrixXd wn(nc, nc);
+  for (int i = 0; i < nc; ++i)
+    for (int j = 0; j < nc; ++j) wn(i, j) = w(3 * i, 3 * j);
+  std::srand(5);
+  for (int trial = 0; trial < 30; ++trial) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.01;
+    StepReport report;
+    solve.start();
+    solve.solve(predicted, 1, report);
+    // Enumerate the active sets of (W_nn + I/k) lambda + g~ >= 0 _|_ lambda >= 0.
+    Eigen::VectorXd found;
+    int solutions = 0;
+    for (int set = 0; set < (1 << nc); ++set) {
+      std::vector<int> a;
+      for (int c = 0; c < nc; ++c)
+        if (set & (1 << c)) a.push_back(c);
+      Eigen::VectorXd lambda = Eigen::VectorXd::Zero(nc);
+      if (!a.empty()) {
+        Eigen::MatrixXd m(a.size(), a.size());
+        Eigen::VectorXd rhs(a.size());
+        for (size_t i = 0; i < a.size(); ++i) {
+          rhs(i) = -predicted(3 * a[i]);
+          for (size_t j = 0; j < a.size(); ++j) m(i, j) = wn(a[i], a[j]) + (i == j ? 1.0 / k : 0.0);
+        }
+        const Eigen::VectorXd la = m.lu().solve(rhs);
+        for (size_t i = 0; i < a.size(); ++i) lambda(a[i]) = la(i);
+      }
+      Eigen::VectorXd g(nc);
+      for (int c = 0; c < nc; ++c) g(c) = predicted(3 * c) + wn.row(c).dot(lambda) + lambda(c) / k;
+      const double tol = 1e-12 * 0.01;
+      if (lambda.minCoeff() >= 0.0 && g.minCoeff() >= -tol) {
+        ++solutions;
+        found = lambda;
+      }
+    }
+    ASSERT_EQ(solutions, 1) << "trial " << trial; // a P-matrix: exactly one
+    for (int c = 0; c < nc; ++c)
+      EXPECT_NEAR(solve.lambda_next()(3 * c), found(c), 1e-10 * found.cwiseAbs().maxCoeff() + 1e-300)
+          << "trial " << trial << " node " << c;
+  }
+}
+
+TEST(LinerContactSolve, DenseYieldingWithFrictionCertifies) {
+  const int nc = 6;
+  const std::vector<double> phi = {0.1, 0.2, 1.7, 2.5, 3.3, 5.0}; // nodes 0, 1 share a bar
+  AbradableCells cells(geometry(), material());
+  const Eigen::MatrixXd w = dense_w(nc, 23, 0.5 / cells.stiffness());
+  for (double mu : {0.05, 0.3}) {
+    LinerContactSolve solve(nc, 1e-3, mu, cells, layout(phi));
+    solve.set_contact_matrix(w);
+    std::srand(9);
+    double plastic = 0.0;
+    for (int step = 1; step <= 50; ++step) {
+      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+      for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.02;
+      StepReport report;
+      solve.solve(predicted, step, report);
+      // The solve's own stopping rule puts these at round-off (header).
+      EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
+      EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "mu " << mu << " step " << step;
+      EXPECT_GE(solve.plastic_work(), plastic);
+      plastic = solve.plastic_work();
+    }
+    EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;
+    EXPECT_GT(plastic, 0.0);
+  }
+}
+
+TEST(LinerContactSolve, StiffBarsAreTheRigidCasing) {
+  const int nc = 4;
+  const std::vector<double> phi = {0.1, 0.9, 1.7, 2.5};
+  AbradableCells cells(geometry(), material(1e12, 1e12));
+  const double k = cells.stiffness();
+  const Eigen::MatrixXd w = dense_w(nc, 31, 1e-5);
+  const double w_min = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(w).eigenvalues().minCoeff();
+  for (double mu : {0.0, 0.2}) {
+    LinerContactSolve liner(nc, 1e-3, mu, cells, layout(phi));
+    CoulombNodeSolve rigid(nc, 1e-3, mu, CoulombGaussSeidelOptions{}, true);
+    liner.set_contact_matrix(w);
+    rigid.set_contact_matrix(w);
+    std::srand(13);
+    for (int step = 1; step <= 20; ++step) {
+      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.01;
+      StepReport a, b;
+      liner.start();
+      rigid.start();
+      liner.solve(predicted, step, a);
+      rigid.solve(predicted, step, b);
+      // The bars add the compliance 1/k to each normal row: the multipliers
+      // move by about |W^-1| / k of themselves (w_min: W's smallest
+      // eigenvalue), a factor 10 for the friction's coupling.
+      const double size = rigid.lambda_next().cwiseAbs().maxCoeff();
+      EXPECT_LE((liner.lambda_next() - rigid.lambda_next()).cwiseAbs().maxCoeff(),
+                10.0 / (k * w_min) * size + 1e-12 * size)
+          << "mu " << mu << " step " << step;
+    }
+    EXPECT_EQ(liner.plastic_work(), 0.0);
+  }
+}
+
+} // namespace
+} // namespace rsi
