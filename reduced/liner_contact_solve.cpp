@@ -184,6 +184,17 @@ double LinerContactSolve::sweep(const Eigen::VectorXd& predicted) {
   return change;
 }
 
+double LinerContactSolve::rounding_scale(const Eigen::VectorXd& predicted) const {
+  double scale = 0.0;
+  for (int c = 0; c < m_nc; ++c) {
+    if (!m_active[c]) continue;
+    double terms = std::abs(predicted(3 * c));
+    for (int j = 0; j < 3 * m_nc; ++j) terms += std::abs(m_w(3 * c, j) * m_lambda(j));
+    scale = std::max(scale, terms / m_w(3 * c, 3 * c));
+  }
+  return scale;
+}
+
 void LinerContactSolve::fail(int step, const std::string& what) const {
   throw ComponentIntegrationError(kWhere + "step " + std::to_string(step) + " (t = " +
                                       message_number(step * m_dt) + " s): " + what,
@@ -219,6 +230,9 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
         if (std::isnan(change)) fail(step, "a tangential block of W is not positive definite or its disk solve did not converge");
         const double size = m_lambda.cwiseAbs().maxCoeff();
         if (change <= m_options.relative_change * size) break;
+        if (change <= 100.0 * m_options.relative_change * size &&
+            change <= m_options.relative_change * rounding_scale(predicted))
+          break;
         if (sweeps >= m_options.max_sweeps)
           fail(step, "the Gauss-Seidel sweeps did not converge in " +
                          std::to_string(m_options.max_sweeps) + " (last change " +
