@@ -13,6 +13,7 @@
 // nodes, one clamped:
 //   n_dofs = N (4 + 3 n) + 4 (n_c - 1).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -194,6 +195,33 @@ void expect_component(const std::string& name, const ComponentExpectation& e) {
   EXPECT_EQ(contact.rigid_surface()->sliding_speed(), e.sliding_sign * 1344.0);
 }
 
+/// The soft liner both liner cases carry (h 2 mm, E 1e4, sigma_y 10,
+/// H 1e3 MPa, 200 cells around, one row), its surface at the contact nodes'
+/// largest radius about z and its axial extent their span widened by 5 %
+/// a side (problem.cpp).
+void expect_liner(const Problem& p) {
+  ASSERT_TRUE(p.casing.liner.has_value());
+  const ProblemLiner& l = *p.casing.liner;
+  EXPECT_EQ(l.thickness, 2.0);
+  EXPECT_EQ(l.young, 1e4);
+  EXPECT_EQ(l.yield, 10.0);
+  EXPECT_EQ(l.hardening, 1e3);
+  EXPECT_EQ(l.n_theta, 200);
+  EXPECT_EQ(l.n_axial, 1);
+  const Component& c = p.structures[0];
+  double radius = 0.0, z_low = 1e300, z_high = -1e300;
+  for (int id : p.contact.contact_nodes)
+    for (const ComponentNode& node : c.nodes)
+      if (node.id == id) {
+        radius = std::max(radius, std::hypot(node.x(0), node.x(1)));
+        z_low = std::min(z_low, node.x(2));
+        z_high = std::max(z_high, node.x(2));
+      }
+  EXPECT_NEAR(l.radius, radius, 1e-12 * radius);
+  EXPECT_NEAR(l.z_min, z_low - 0.05 * (z_high - z_low), 1e-12 * radius);
+  EXPECT_NEAR(l.z_max, z_high + 0.05 * (z_high - z_low), 1e-12 * radius);
+}
+
 // The gmsh blade at element_size 10: 4,101 dofs (docs/case-files.md; the
 // element-size table of test_gmsh_blade_cache), its TIP node set 16 nodes
 // (test_component_rubbing). blade3d-rubbing.json: mu 0.05, 1 revolution,
@@ -211,6 +239,11 @@ TEST(Problem, GmshBladeCases) {
   const Problem rotating = load_problem(case_path("blade3d-rubbing-rotating.json"), {"", cache_dir()});
   ASSERT_EQ(rotating.casing.tip_growth.size(), 16u);
   for (double g : rotating.casing.tip_growth) EXPECT_GT(g, 0.0);
+  // The same cutting the soft abradable liner over half a revolution: the
+  // case's liner keys (h 2 mm, E 1e4, sigma_y 10, H 1e3 MPa, 200 cells, one
+  // row) and the unworn surface at the contact nodes' largest radius.
+  expect_component("blade3d-rubbing-liner.json", {4101, 16, 11, 0.05, 0.5, 1.0, true});
+  expect_liner(load_problem(case_path("blade3d-rubbing-liner.json"), {"", cache_dir()}));
 }
 
 // Rotor 37 (shared/external/rotor37/README.md): 61,098 dofs, 16 contact
@@ -230,6 +263,13 @@ TEST(Problem, Rotor37RubbingCase) {
   expect_component("rotor37-rubbing.json", {61098, 16, 1353, 0.15, 50.0, -1.0, false});
 }
 
+TEST(Problem, Rotor37RubbingLinerCase) {
+  if (const std::string why = component_missing("rotor37"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("rotor37-rubbing-liner.json", {61098, 16, 1353, 0.15, 50.0, -1.0, false});
+  expect_liner(load_problem(case_path("rotor37-rubbing-liner.json"), {"", cache_dir()}));
+}
+
 TEST(Problem, Rotor37RubbingLumpedCase) {
   if (const std::string why = component_missing("rotor37"); !why.empty())
     GTEST_SKIP() << "not run: " << why;
@@ -243,8 +283,10 @@ TEST(Problem, EveryCaseFileIsCovered) {
       {"batailly2007.json", "paper"},        {"batailly2007-36el.json", "paper"},
       {"batailly2007-72el.json", "paper"},   {"blade3d.json", "component"},
       {"blade3d-rubbing.json", "component"}, {"blade3d-rubbing-rotating.json", "component"},
+      {"blade3d-rubbing-liner.json", "component"},
       {"rotor37.json", "component"},
-      {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"}};
+      {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"},
+      {"rotor37-rubbing-liner.json", "component"}};
   int files = 0;
   for (const fs::directory_entry& entry : fs::directory_iterator(RSI_SOURCE_DIR "/data/cases")) {
     if (entry.path().extension() != ".json") continue;
