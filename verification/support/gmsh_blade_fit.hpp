@@ -1,8 +1,13 @@
 #pragma once
 // The gmsh blade's rotation fit (rotation_fit.hpp) at 200, 400, 800, 1200,
-// 1600, 2000 rad/s, built once a test suite in its own ccx cache: the
-// fixture of test_rotation_fit and test_speed_subspace. Its tests skip
-// (GTEST_SKIP, reason printed) when ccx or gmsh is not on PATH.
+// 1600, 2000 rad/s, built once a test process: the fixture of
+// test_rotation_fit and test_speed_subspace. ctest runs each case in its
+// own process, so the ccx runs go to the build's shared cache
+// (RSI_CCX_CACHE, the one the command-line tests use; entries are written
+// by rename, so concurrent processes are safe): ccx runs once a build, in
+// the first process that needs it, not six times in each. Without that
+// definition, a cache of the process's own. Its tests skip (GTEST_SKIP,
+// reason printed) when ccx or gmsh is not on PATH.
 
 #include <cstdio>
 #include <filesystem>
@@ -47,7 +52,11 @@ protected:
     dir = std::filesystem::temp_directory_path() /
           ("rsi-blade-fit-" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
+#ifdef RSI_CCX_CACHE
+    options.ccx_cache = RSI_CCX_CACHE;
+#else
     options.ccx_cache = (dir / "cache").string();
+#endif
     const std::string path = RSI_SOURCE_DIR "/data/cases/blade3d.json";
     c = parse_component_case(read_case_document(path), path);
     fit = fit_rotation(c, options, blade_fit_speeds(), 2);
