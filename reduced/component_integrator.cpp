@@ -117,6 +117,10 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
     m_rotor->start_balance(m_lambda);
   }
   m_casing->gaps_at(m_rotor->boundary(), 0.0);
+  // A massless boundary in contact at t = 0 (a tip grown into the liner)
+  // starts with loaded bars: their energy is in E0, and W_contact counts the
+  // bars' work from there.
+  m_initial_bar_energy = m_liner ? m_liner->elastic_energy() : 0.0;
   m_initial_energy = energy();
 }
 
@@ -161,7 +165,8 @@ double ComponentIntegrator::energy() const {
 }
 
 double ComponentIntegrator::contact_work() const {
-  return m_liner ? m_contact->contact_work() + m_liner->elastic_energy() + m_liner->plastic_work()
+  return m_liner ? m_contact->contact_work() + (m_liner->elastic_energy() - m_initial_bar_energy) +
+                       m_liner->plastic_work()
                  : m_contact->contact_work();
 }
 
@@ -171,7 +176,7 @@ double ComponentIntegrator::plastic_work() const {
 
 double ComponentIntegrator::liner_unmatched_work() const {
   return m_liner ? (m_wall_work - m_liner->normal_work()) -
-                       (m_liner->elastic_energy() + m_liner->plastic_work())
+                       (m_liner->elastic_energy() - m_initial_bar_energy + m_liner->plastic_work())
                  : 0.0;
 }
 

@@ -121,8 +121,8 @@ public:
   /// plus its bars' elastic energy F^2 / (2 k) of the last step.
   double energy() const override;
   double initial_energy() const override { return m_initial_energy; }
-  /// W_contact; with a liner plus the bars' own work by their law (elastic
-  /// energy and W_plastic), so that E = E0 + W_ext + W_contact - W_damp -
+  /// W_contact; with a liner plus the bars' own work by their law (their
+  /// elastic energy's change since the start and W_plastic), so that E = E0 + W_ext + W_contact - W_damp -
   /// W_plastic is the blade's identity, as in the full-order run
   /// (docs/decisions.md, "The abradable liner").
   double contact_work() const override;
@@ -153,6 +153,7 @@ private:
   std::unique_ptr<ComponentContactSolve> m_contact;
   LinerContactSolve* m_liner = nullptr; ///< m_contact when it is the liner's
   double m_wall_work = 0.0;             ///< -sum lambda_n (g0(t_{n+1}) - g0(t_{n-1})) / 2
+  double m_initial_bar_energy = 0.0;    ///< the bars' elastic energy at the start (MacNeal in contact at t = 0)
   std::unique_ptr<RigidCasingPart> m_casing;
   std::unique_ptr<ComponentRotorPart> m_rotor;
   Eigen::VectorXd m_lambda; ///< the multipliers of the step that produced x_n

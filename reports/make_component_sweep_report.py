@@ -37,6 +37,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 SWEEP_COLUMNS = ["speed_rad_s", "run", "method", "modes", "status", "diverged", "rows", "max_tip_radial",
                  "max_contact_force", "contact_fraction", "energy_ratio", "balance_residual",
                  "f1_hz", "a1", "f2_hz", "a2", "f3_hz", "a3"]
+# A case with an abradable liner adds these (docs/outputs.md).
+WEAR_COLUMNS = ["max_wear_depth", "wear_lobes", "plastic_work"]
 LINE_COLUMNS = ["run", "mode", "blade_hz", "engine_order", "casing_harmonic", "speed_rad_s"]
 NAME = "make_component_sweep_report.py"
 
@@ -50,12 +52,13 @@ def number(text):
     return float(text) if text != "" else math.nan
 
 
-def read_csv(path, columns):
+def read_csv(path, columns, optional=()):
+    """The rows of `path`, whose columns must be `columns` (then `optional`, if any)."""
     if not os.path.isfile(path):
         die(f"{path}: missing")
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
-        if reader.fieldnames != columns:
+        if reader.fieldnames not in (columns, columns + list(optional)):
             die(f"{path}: columns {reader.fieldnames}, expected {columns}")
         return list(reader)
 
@@ -78,7 +81,7 @@ def main():
     if len(sys.argv) != 2:
         die("usage: make_component_sweep_report.py DIR")
     out = sys.argv[1]
-    rows = read_csv(os.path.join(out, "sweep.csv"), SWEEP_COLUMNS)
+    rows = read_csv(os.path.join(out, "sweep.csv"), SWEEP_COLUMNS, WEAR_COLUMNS)
     lines = read_csv(os.path.join(out, "interaction_lines.csv"), LINE_COLUMNS)
     summary_path = os.path.join(out, "sweep_summary.json")
     try:
@@ -129,7 +132,9 @@ def main():
     panels = [("max_tip_radial", f"max |radial tip displacement| [{length_unit}]"),
               ("contact_fraction", "contact fraction (rows with a closed contact)"),
               ("max_contact_force", f"max normal contact force [{force_unit}]")]
-    fig, axes = plt.subplots(len(panels), 1, figsize=(10, 9), sharex=True)
+    if "max_wear_depth" in rows[0]:
+        panels.append(("max_wear_depth", f"deepest wear of the liner [{length_unit}]"))
+    fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3 * len(panels)), sharex=True)
     for ax, (key, label) in zip(axes, panels):
         for run in runs:
             x, y = series(run, key)
@@ -239,6 +244,12 @@ def main():
                          f"{' (at that speed)' if campbell else ''}, whose EO {order} line crosses "
                          f"at {where}" if order >= 1 else "")
         md.append(f"- {run}: the largest radial tip displacement, {y[i]:.4g}, is at {x[i]:g} rad/s{note}.")
+        if "max_wear_depth" in rows[0]:
+            xw, w = series(run, "max_wear_depth")
+            j = max(range(len(w)), key=lambda m: (w[m] if not math.isnan(w[m]) else -1))
+            lobes = [r["wear_lobes"] for r in rows if r["run"] == run and r["status"] != "failed"]
+            md.append(f"- {run}: the deepest wear, {w[j]:.4g}, is at {xw[j]:g} rad/s "
+                      f"({lobes[j]} lobes there); liner: {summary.get('liner', {})}.")
     md += ["", "## Campbell diagram", "", "![Campbell diagram](sweep_campbell.png)", ""]
     failures = summary.get("failures", [])
     if failures:

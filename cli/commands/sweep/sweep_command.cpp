@@ -195,9 +195,12 @@ int SweepCommand::run(StagedOutput& output) {
   if (mpi.rank() == 0) stage = output.open(options.out, "--out", sweep_output_set());
   points->prepare(); // on every rank: each runs its share
   std::unique_ptr<StreamedTextFile> csv;
+  std::string written = options.out + "/sweep.csv"; // the files the last line names
   if (mpi.rank() == 0) {
-    for (const auto& [name, text] : points->side_files())
+    for (const auto& [name, text] : points->side_files()) {
       write_text_file(stage + "/" + name, text);
+      written += ", " + options.out + "/" + name;
+    }
     csv = std::make_unique<StreamedTextFile>(stage + "/sweep.csv");
     csv->append(points->csv_header());
   }
@@ -235,8 +238,7 @@ int SweepCommand::run(StagedOutput& output) {
               seconds_since(start));
   for (const std::string& f : outcome.failures)
     std::fprintf(stderr, "rsi: sweep: failed: %s\n", f.c_str());
-  output.announce("wrote " + options.out + "/sweep.csv, " + options.out + "/interaction_lines.csv, " +
-                  options.out + "/sweep_summary.json\n");
+  output.announce("wrote " + written + ", " + options.out + "/sweep_summary.json\n");
   if (options.report) {
     if (!write_report(points->report_script(), stage, options.out)) return 1;
     output.announce("report: " + options.out + "/sweep_report.md\n");
