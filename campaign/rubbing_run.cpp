@@ -181,6 +181,8 @@ std::optional<ComponentLiner> component_liner(const Problem& problem) {
   liner.material.young = l.young;
   liner.material.yield = l.yield;
   liner.material.hardening = l.hardening;
+  liner.patch.circumferential = l.patch_circumferential;
+  liner.patch.axial = l.patch_axial;
   return liner;
 }
 

@@ -82,6 +82,9 @@ public:
   double area() const { return m_area; }          ///< A
   double stiffness() const { return m_k; }        ///< k
   double hardening_stiffness() const { return m_kh; } ///< k_H
+  const AbradableCellsGeometry& geometry() const { return m_geometry; }
+  double pitch() const { return m_pitch; }    ///< dtheta = 2 pi / n_theta [rad]
+  double row_height() const { return m_row; } ///< dz = (z_max - z_min) / n_axial [length]
 
   /// Sector of a finite angle [rad].
   int sector(double theta) const;

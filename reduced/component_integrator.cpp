@@ -22,6 +22,7 @@ std::unique_ptr<ComponentContactSolve> contact_solve_of(const RigidCasing& casin
                                               options.coulomb, options.closing_subset);
   LinerContactLayout layout;
   layout.omega = casing.omega();
+  layout.patch = options.liner->patch;
   for (int c = 0; c < casing.n_contacts(); ++c) {
     layout.polar_angle.push_back(casing.polar_angle(c));
     layout.axial.push_back(casing.axial_coordinate(c));

@@ -18,6 +18,9 @@ struct ComponentLiner {
   AbradableCellsGeometry geometry;
   AbradableCellsMaterial material;
   LinerContactSolveOptions solve;
+  /// Every contact node's tip patch (liner_patch_cells.hpp); both widths 0:
+  /// absent, a node presses the one cell under it.
+  TipPatch patch;
 };
 
 struct ComponentIntegratorOptions {

@@ -82,7 +82,10 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
     , m_cells(cells)
     , m_options(options)
     , m_phi(layout.polar_angle)
-    , m_omega(layout.omega) {
+    , m_omega(layout.omega)
+    , m_patch(layout.patch)
+    , m_patched(layout.patch.present())
+    , m_axial(layout.axial) {
   if (static_cast<int>(layout.polar_angle.size()) != n_contacts ||
       static_cast<int>(layout.axial.size()) != n_contacts)
     throw std::invalid_argument(kWhere + "the layout has " +
@@ -94,6 +97,11 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
   if (!std::isfinite(layout.omega))
     throw std::invalid_argument(kWhere + "omega = " + message_number(layout.omega) +
                                 ", allowed finite");
+  if (!(std::isfinite(layout.patch.circumferential) && layout.patch.circumferential >= 0.0 &&
+        std::isfinite(layout.patch.axial) && layout.patch.axial >= 0.0))
+    throw std::invalid_argument(
+        kWhere + "tip patch " + message_number(layout.patch.circumferential) + " x " +
+        message_number(layout.patch.axial) + ", allowed finite widths >= 0");
   if (options.max_sweeps < 1 || !(options.relative_change >= 0.0 && options.relative_change < 1.0) ||
       !(options.law_tolerance > 0.0 && options.law_tolerance < 1.0))
     throw std::invalid_argument(kWhere + "options: max_sweeps >= 1, relative_change in [0, 1), "
@@ -111,6 +119,12 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
   m_cell.assign(m_nc, 0);
   m_active.assign(m_nc, 0);
   m_response.assign(m_nc, BarResponse{});
+  if (m_patched) {
+    m_patch_cells.assign(m_nc, {});
+    m_previous.assign(m_nc, {});
+    m_patch_response.assign(m_nc, {});
+    m_last.assign(static_cast<size_t>(m_cells.n_cells()), PatchLink{});
+  }
 }
 
 void LinerContactSolve::set_contact_matrix(const Eigen::MatrixXd& w) {
@@ -132,6 +146,45 @@ int LinerContactSolve::cell(int c, double t) const {
   return m_row[c] * m_cells.n_theta() + m_cells.sector(m_omega * t + m_phi[c]);
 }
 
+std::vector<int> LinerContactSolve::cells_under(int c, double t) const {
+  if (!m_patched) return {cell(c, t)};
+  return patch_cells(m_cells, m_omega * t + m_phi[c], m_axial[c], m_patch);
+}
+
+void LinerContactSolve::place_patches(double t) {
+  for (int c = 0; c < m_nc; ++c) {
+    m_patch_cells[c] = cells_under(c, t);
+    const size_t n = m_patch_cells[c].size();
+    m_previous[c].resize(n);
+    m_patch_response[c].assign(n, BarResponse{});
+    for (size_t i = 0; i < n; ++i) {
+      // Until its first evaluation a response holds the cell's committed state.
+      m_patch_response[c][i].state = m_cells.state(m_patch_cells[c][i]);
+      PatchLink& last = m_last[static_cast<size_t>(m_patch_cells[c][i])];
+      m_previous[c][i] = last;
+      last = PatchLink{c, static_cast<int>(i)};
+    }
+  }
+  for (int c = 0; c < m_nc; ++c)
+    for (int cell : m_patch_cells[c]) m_last[static_cast<size_t>(cell)] = PatchLink{};
+}
+
+BarState LinerContactSolve::patch_start_state(int c, int position) const {
+  // The latest earlier ACTIVE contact over the same cell left its state.
+  PatchLink link = m_previous[c][position];
+  while (link.contact >= 0 && !m_active[link.contact])
+    link = m_previous[link.contact][link.position];
+  if (link.contact >= 0) return m_patch_response[link.contact][link.position].state;
+  return m_cells.state(m_patch_cells[c][position]);
+}
+
+double LinerContactSolve::patch_solve(int c, double depth_pred, double compliance) {
+  const int n = static_cast<int>(m_patch_cells[c].size());
+  m_from.resize(n);
+  for (int i = 0; i < n; ++i) m_from[i] = patch_start_state(c, i);
+  return patch_compliant(m_cells, m_from, depth_pred, compliance, m_patch_response[c]);
+}
+
 void LinerContactSolve::add_contact_work(const Eigen::VectorXd& lambda_n,
                                          const Eigen::MatrixXd& rows,
                                          const Eigen::VectorXd& increment) {
@@ -147,6 +200,15 @@ BarState LinerContactSolve::start_state(int c) const {
   return m_cells.state(m_cell[c]);
 }
 
+double LinerContactSolve::least_wear(int c, bool chained) const {
+  if (!m_patched) return chained ? start_state(c).wear : m_cells.state(m_cell[c]).wear;
+  double least = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < m_patch_cells[c].size(); ++i)
+    least = std::min(least, chained ? patch_start_state(c, static_cast<int>(i)).wear
+                                    : m_cells.state(m_patch_cells[c][i]).wear);
+  return least;
+}
+
 double LinerContactSolve::sweep(const Eigen::VectorXd& predicted) {
   m_y = predicted;
   for (int c = 0; c < m_nc; ++c)
@@ -155,14 +217,20 @@ double LinerContactSolve::sweep(const Eigen::VectorXd& predicted) {
   double change = 0.0;
   for (int c = 0; c < m_nc; ++c) {
     if (!m_active[c]) continue;
-    const BarState from = start_state(c);
     const double wnn = m_w(3 * c, 3 * c);
-    const double delta = -(m_y(3 * c) - wnn * m_lambda(3 * c)) - from.wear;
-    m_response[c] = m_cells.compliant(from, delta, wnn);
-    const double dn = m_response[c].force - m_lambda(3 * c);
+    double force = 0.0;
+    if (m_patched) {
+      force = patch_solve(c, -(m_y(3 * c) - wnn * m_lambda(3 * c)), wnn);
+    } else {
+      const BarState from = start_state(c);
+      const double delta = -(m_y(3 * c) - wnn * m_lambda(3 * c)) - from.wear;
+      m_response[c] = m_cells.compliant(from, delta, wnn);
+      force = m_response[c].force;
+    }
+    const double dn = force - m_lambda(3 * c);
     if (dn != 0.0) {
       m_y.noalias() += m_w.col(3 * c) * dn;
-      m_lambda(3 * c) = m_response[c].force;
+      m_lambda(3 * c) = force;
     }
     const Eigen::Vector2d lt = m_lambda.segment<2>(3 * c + 1);
     const Eigen::Vector2d b = m_y.segment<2>(3 * c + 1) - m_wtt[c] * lt;
@@ -208,12 +276,13 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
     m_cell[c] = cell(c, t);
     m_active[c] = 0;
   }
+  if (m_patched) place_patches(t);
   // Active: positive predicted indentation into the cell's worn surface, or
   // a force at the last step (chained wear only grows the indentation's
   // threshold, so the unchained state is the generous test).
   bool any = false;
   for (int c = 0; c < m_nc; ++c) {
-    m_active[c] = -predicted(3 * c) - m_cells.state(m_cell[c]).wear > 0.0 || m_lambda(3 * c) > 0.0;
+    m_active[c] = -predicted(3 * c) - least_wear(c, false) > 0.0 || m_lambda(3 * c) > 0.0;
     any = any || m_active[c];
   }
   for (int c = 0; c < m_nc; ++c)
@@ -245,7 +314,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
         if (m_active[c]) m_y.noalias() += m_w.middleCols<3>(3 * c) * m_lambda.segment<3>(3 * c);
       bool grown = false;
       for (int c = 0; c < m_nc; ++c)
-        if (!m_active[c] && -m_y(3 * c) - start_state(c).wear > 0.0) {
+        if (!m_active[c] && -m_y(3 * c) - least_wear(c, true) > 0.0) {
           m_active[c] = 1;
           grown = true;
         }
@@ -266,13 +335,21 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
   report.max_complementarity = 0.0;
   for (int c = 0; c < m_nc; ++c) {
     // An inactive contact's evaluation only checks that it stays out of its bar.
-    const BarState from = start_state(c);
     const double g = m_y(3 * c);
     const double wnn = m_w(3 * c, 3 * c);
-    const BarResponse r = m_cells.compliant(from, -(g - wnn * m_lambda(3 * c)) - from.wear, wnn);
-    residual = std::max(residual, std::abs(m_lambda(3 * c) - r.force));
-    if (m_active[c]) m_response[c] = r;
-    m_elastic_energy += r.force * r.force / (2.0 * m_cells.stiffness());
+    if (m_patched) {
+      // An inactive contact's responses are kept too: no chain reads them.
+      const double f = patch_solve(c, -(g - wnn * m_lambda(3 * c)), wnn);
+      residual = std::max(residual, std::abs(m_lambda(3 * c) - f));
+      for (const BarResponse& r : m_patch_response[c])
+        m_elastic_energy += r.force * r.force / (2.0 * m_cells.stiffness());
+    } else {
+      const BarState from = start_state(c);
+      const BarResponse r = m_cells.compliant(from, -(g - wnn * m_lambda(3 * c)) - from.wear, wnn);
+      residual = std::max(residual, std::abs(m_lambda(3 * c) - r.force));
+      if (m_active[c]) m_response[c] = r;
+      m_elastic_energy += r.force * r.force / (2.0 * m_cells.stiffness());
+    }
     const double ln = m_lambda(3 * c);
     const Eigen::Vector2d lt = m_lambda.segment<2>(3 * c + 1);
     const Eigen::Vector2d s = m_y.segment<2>(3 * c + 1);
@@ -292,8 +369,15 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
   if (!(law <= m_options.law_tolerance))
     fail(step, "the bars' law holds only to " + message_number(law) + " of the largest force (allowed " +
                    message_number(m_options.law_tolerance) + ")");
-  for (int c = 0; c < m_nc; ++c)
-    if (m_active[c]) m_cells.commit(m_cell[c], m_response[c]);
+  for (int c = 0; c < m_nc; ++c) {
+    if (!m_active[c]) continue;
+    if (!m_patched) {
+      m_cells.commit(m_cell[c], m_response[c]);
+      continue;
+    }
+    for (size_t i = 0; i < m_patch_cells[c].size(); ++i)
+      m_cells.commit(m_patch_cells[c][i], m_patch_response[c][i]);
+  }
   report.max_cone_violation = std::max(cone, 0.0);
   report.max_stick_slip_residual = std::max(slip_scale > 0.0 ? stick / slip_scale : 0.0,
                                             force_scale > 0.0 ? slip / force_scale : 0.0);

@@ -45,6 +45,21 @@
 // as for the rigid casing (coulomb_gauss_seidel.hpp): not proven, and a
 // solve that does not converge in max_sweeps is REPORTED (thrown), never
 // carried on.
+// Tip patch (liner_patch_cells.hpp; absent when both widths are 0, and then
+// everything above and below holds word for word, on the same code path):
+// contact c presses every cell under its patch at t_{n+1}, and its normal
+// law is the sum of their bars at the common depth,
+//   lambda_n,c = sum_i F_bar(state_i, delta_c - p_i),  delta_c = -g_c,
+// each bar's state chained as above (a later contact, in node order, whose
+// patch shares a cell with an earlier one starts that cell from the state
+// the earlier one's response left). The normal row's update is the patch's
+// joint compliant solve (patch_compliant) from d~ = -(y_n - W_nn lambda_n);
+// a contact is active when its predicted depth passes the least worn of its
+// cells; the certificate's F_c is that solve at the final y; the elastic
+// energy sums F_i^2 / (2 k) over every (contact, cell) response; the commit
+// goes contact by contact in node order. The Gauss-Seidel argument above
+// carries over: the patch's law is still monotone in the node's depth.
+//
 // Active set: the contacts whose predicted indentation is positive or that
 // carried a force at the last step, grown (in node order) by any contact
 // the others' forces push into its cell, until none is.
@@ -74,6 +89,7 @@
 
 #include "abradable_cells.hpp"
 #include "component_contact_solve.hpp"
+#include "liner_patch_cells.hpp"
 
 namespace rsi {
 
@@ -88,6 +104,7 @@ struct LinerContactLayout {
   std::vector<double> polar_angle; ///< phi_c [rad]
   std::vector<double> axial;       ///< a . x_c [length], within the liner's extent
   double omega = 0.0;              ///< the gap phase's speed [rad/s]
+  TipPatch patch;                  ///< every node's tip patch; both widths 0: absent
 };
 
 class LinerContactSolve final : public ComponentContactSolve {
@@ -109,8 +126,11 @@ public:
   long sweeps() const override { return m_sweeps; }
 
   const AbradableCells& cells() const { return m_cells; }
-  /// The cell under contact c at time t.
+  /// The cell under contact c at time t (the one-cell rule).
   int cell(int c, double t) const;
+  /// The cells under contact c's tip patch at time t, ascending; without a
+  /// patch the one cell(c, t).
+  std::vector<int> cells_under(int c, double t) const;
   /// Sum of F^2 / (2 k) over the last step's bars.
   double elastic_energy() const { return m_elastic_energy; }
   double plastic_work() const { return m_cells.plastic_work(); }
@@ -126,6 +146,18 @@ private:
   double sweep(const Eigen::VectorXd& predicted);
   /// The state contact c's bar starts from this step (the chain of the header).
   BarState start_state(int c) const;
+  /// The least wear of contact c's cells (of its one cell without a patch):
+  /// chained (this step's start states) or as committed (the active test).
+  double least_wear(int c, bool chained) const;
+  /// With a patch: the cells under every contact this step, and each
+  /// (contact, cell)'s latest earlier contact over the same cell.
+  void place_patches(double t);
+  /// With a patch: the state the cell at `position` of contact c's patch
+  /// starts from this step (the chain of the header).
+  BarState patch_start_state(int c, int position) const;
+  /// With a patch: the joint compliant solve of contact c from depth d~
+  /// (header), its bars' responses kept in m_patch_response[c].
+  double patch_solve(int c, double depth_pred, double compliance);
   [[noreturn]] void fail(int step, const std::string& what) const;
 
   int m_nc;
@@ -142,6 +174,19 @@ private:
   std::vector<int> m_cell;             ///< per contact, this step
   std::vector<char> m_active;          ///< per contact
   std::vector<BarResponse> m_response; ///< per contact, the last evaluation
+  /// An earlier (contact, position in its patch) over the same cell, or -1.
+  struct PatchLink {
+    int contact = -1;
+    int position = -1;
+  };
+  TipPatch m_patch;
+  bool m_patched = false;                                 ///< m_patch.present()
+  std::vector<double> m_axial;                            ///< z_c per contact
+  std::vector<std::vector<int>> m_patch_cells;            ///< per contact, this step
+  std::vector<std::vector<PatchLink>> m_previous;         ///< per contact and patch cell
+  std::vector<std::vector<BarResponse>> m_patch_response; ///< per contact and patch cell
+  std::vector<PatchLink> m_last;                          ///< per cell, scratch of place_patches
+  std::vector<BarState> m_from;                           ///< scratch of patch_solve
   double m_contact_work = 0.0, m_normal_work = 0.0, m_elastic_energy = 0.0;
   double m_max_law_residual = 0.0;
   long m_sweeps = 0;

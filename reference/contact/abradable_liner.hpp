@@ -133,6 +133,8 @@ public:
   /// j n_theta + i for the point (theta, z).
   int cell(double theta, double z) const;
 
+  double pitch() const { return m_pitch; }               ///< dtheta = 2 pi / n_theta
+  double row_width() const { return m_row_width; }       ///< dz = (z_max - z_min) / n_axial
   double cell_area() const { return m_area; }            ///< A = r dtheta dz
   double stiffness() const { return m_stiffness; }       ///< k = E A / h
   double tangent_stiffness() const { return m_tangent; } ///< k_t = k H / (E + H)

@@ -18,6 +18,11 @@
 // closed form. Two nodes over one cell in one step solve in turn, the second
 // from the state the first left (the cell is pushed twice in the step).
 //
+// With a tip patch (liner_patch.hpp) a node presses every cell under its
+// patch, all at its depth, and its force is the patch's compliant root; a
+// cell under the patches of two nodes in one step is pushed by both in turn,
+// as above. Without one, the single cell under the node, as before.
+//
 // Step protocol: begin_step(); respond() per node in node order; then
 // commit_step() once the step's contact problem is final (the cells' states
 // become those of the responses, the plastic work is added, the elastic
@@ -29,6 +34,7 @@
 #include <vector>
 
 #include "abradable_liner.hpp"
+#include "liner_patch.hpp"
 #include "rigid_surface_contact.hpp"
 
 namespace rsi {
@@ -38,17 +44,20 @@ public:
   /// Throws std::invalid_argument for bad liner parameters or a contact node
   /// outside the liner's axial extent (naming the node's index and z).
   LinerSurface(const RigidSurfaceContact& law, const LinerGeometry& geometry,
-               const LinerMaterial& material);
+               const LinerMaterial& material, const LinerPatch& patch = {});
 
   const AbradableLiner& liner() const { return m_liner; }
   const RigidSurfaceContact& law() const { return m_law; }
-  /// The cell under contact node c at time t.
-  int cell(int contact, double t) const;
+  const LinerPatch& patch() const { return m_patch; }
+  /// The cells contact node c presses at time t: the one under it, or those
+  /// under its patch.
+  std::vector<int> cells(int contact, double t) const;
 
   void begin_step();
-  /// The compliant solve of node c at t_next (header) from the cell's state
-  /// as this step left it; remembered for commit_step().
-  LinerBarResponse respond(int contact, double t_next, double rigid_gap, double compliance);
+  /// The compliant solve of node c at t_next (header) from its cells' states
+  /// as this step left them; remembered for commit_step(). Returns the
+  /// normal force.
+  double respond(int contact, double t_next, double rigid_gap, double compliance);
   /// Keeps the step's responses (header).
   void commit_step();
 
@@ -63,7 +72,8 @@ private:
   };
   const RigidSurfaceContact& m_law;
   AbradableLiner m_liner;
-  std::vector<int> m_rows;
+  LinerPatch m_patch;
+  std::vector<std::vector<int>> m_rows; ///< per contact: its row, or its patch's rows
   std::vector<Pending> m_pending;
   double m_elastic_energy = 0.0;
 };

@@ -285,6 +285,13 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
                                             std::to_string(l.z_min) + ", got " +
                                             std::to_string(l.z_max));
     }
+    liner.claim("tip_patch");
+    if (lj.contains("tip_patch")) {
+      ObjectReader patch = liner.object("tip_patch");
+      l.patch_circumferential = patch.number("circumferential", {0.0, inf, true, true, "(length)"});
+      l.patch_axial = patch.number("axial", {0.0, inf, true, true, "(length)"});
+      patch.finish();
+    }
     liner.finish();
     out.liner = l;
   }

@@ -73,6 +73,11 @@ struct LinerSetup {
   bool axial_extent = false;
   double z_min = 0.0;
   double z_max = 0.0;
+  /// The tip patch a contact node stands for (rubbing.liner.tip_patch):
+  /// its widths around the casing and along the axis, both > 0 [length];
+  /// 0: absent, a node presses the one cell under it.
+  double patch_circumferential = 0.0;
+  double patch_axial = 0.0;
 };
 
 struct RubbingSetup {

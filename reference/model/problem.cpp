@@ -135,6 +135,8 @@ ProblemLiner problem_liner(const ComponentCase& c, const LinerSetup& setup, cons
   l.hardening = setup.hardening_modulus;
   l.n_theta = setup.cells_around;
   l.n_axial = setup.rows;
+  l.patch_circumferential = setup.patch_circumferential;
+  l.patch_axial = setup.patch_axial;
   if (!(setup.thickness < radius))
     throw CaseError(c.case_path + ": the abradable liner's thickness must be less than the contact "
                                   "nodes' largest radius about the rotation axis, " +

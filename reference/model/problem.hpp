@@ -94,6 +94,11 @@ struct ProblemLiner {
   int n_axial = 1;
   double z_min = 0.0;
   double z_max = 0.0;
+  /// The tip patch of every contact node (liner_patch.hpp): its widths
+  /// around the casing and along the axis [length]; both 0: no patch, a
+  /// node presses the one cell under it.
+  double patch_circumferential = 0.0;
+  double patch_axial = 0.0;
 };
 
 struct ProblemCasing {

@@ -547,16 +547,16 @@ void CentralDifference::solve_liner(FrictionalContactCertificate& certificate, d
   certificate = FrictionalContactCertificate{};
   for (int c = 0; c < nc; ++c) {
     const double w = contact_flexibility(geo.rows[b * c], geo.rows[b * c]);
-    const LinerBarResponse r = m_liner->respond(c, t_next, geo.normal_gap(c), w);
-    if (!(r.force > 0.0)) continue;
+    const double force = m_liner->respond(c, t_next, geo.normal_gap(c), w);
+    if (!(force > 0.0)) continue;
     m_play.push_back(c);
-    m_lambda(c) = r.force;
+    m_lambda(c) = force;
     // Coulomb on the disk of radius mu F: the stick multiplier cancels the
     // predicted slip (s~ + W_tt lambda_t = 0); beyond the disk, its
     // projection (the slip law lambda_t = -mu F s~/|s~|).
     Eigen::VectorXd lt = -geo.slip.segment(d * c, d) / w;
     const double norm = lt.norm();
-    const double radius = mu * r.force;
+    const double radius = mu * force;
     ContactClass cls = ContactClass::stick;
     if (norm > radius) {
       lt *= norm > 0.0 ? radius / norm : 0.0;
@@ -573,7 +573,7 @@ void CentralDifference::solve_liner(FrictionalContactCertificate& certificate, d
       m_slip_direction.segment(d * c, d) = direction;
     }
     for (int p = 0; p < b; ++p) {
-      const double l = p == 0 ? r.force : lt(p - 1);
+      const double l = p == 0 ? force : lt(p - 1);
       if (l == 0.0) continue;
       for (const auto& [dof, coefficient] : geo.rows[b * c + p]) {
         const InverseMassColumn& column = inverse_mass_column(dof);

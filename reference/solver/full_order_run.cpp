@@ -221,7 +221,8 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
     material.yield = l.yield;
     material.hardening = l.hardening;
     try {
-      liner.emplace(*contact.rigid_surface(), geometry, material);
+      liner.emplace(*contact.rigid_surface(), geometry, material,
+                    LinerPatch{l.patch_circumferential, l.patch_axial});
     } catch (const std::invalid_argument& e) {
       throw CaseError(problem.source + ": the abradable liner: " + e.what());
     }

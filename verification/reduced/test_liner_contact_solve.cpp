@@ -12,10 +12,16 @@
 //     stick and slip residuals) at round-off;
 // and the rigid limit: bars of huge stiffness and yield give the rigid
 // casing's multipliers (reduced/coulomb_node_solve) to within the bars'
-// compliance.
+// compliance. Then the tip patch (liner_patch_cells.hpp): with a diagonal W
+// each node's multiplier satisfies the patch's bar law (the sum over its
+// cells, chained) at the final gap, the plastic work is its closed form from
+// the final wear, and a patch of zero width is the one-cell solve bit for bit.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <map>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -248,6 +254,214 @@ TEST(LinerContactSolve, StiffBarsAreTheRigidCasing) {
           << "mu " << mu << " step " << step;
     }
     EXPECT_EQ(liner.plastic_work(), 0.0);
+  }
+}
+
+/// 64 sectors x 4 rows over [-10, 10] (r dtheta = 24.5, dz = 5; centres at
+/// z = -7.5, -2.5, 2.5, 7.5): a patch of 60 x 8 covers 2 or 3 sectors and
+/// 1 or 2 rows.
+AbradableCellsGeometry fine_geometry() {
+  AbradableCellsGeometry g = geometry();
+  g.n_theta = 64;
+  g.n_axial = 4;
+  return g;
+}
+
+/// Five nodes, turning at 30 rad/s: nodes 0 and 1 share cells, node 4's
+/// patch crosses the 0 / 2 pi seam at the start.
+LinerContactLayout patch_layout(double circumferential, double axial) {
+  LinerContactLayout l;
+  l.polar_angle = {0.1, 0.15, 1.0, 3.0, 6.25};
+  l.axial = {0.0, 1.0, -3.0, 9.5, 0.0};
+  l.omega = 30.0;
+  l.patch.circumferential = circumferential;
+  l.patch.axial = axial;
+  return l;
+}
+
+/// A diagonal W, equal entries on a node's three rows (a lumped mass).
+Eigen::MatrixXd diagonal_w(const Eigen::VectorXd& w_node) {
+  const int nc = static_cast<int>(w_node.size());
+  Eigen::MatrixXd w = Eigen::MatrixXd::Zero(3 * nc, 3 * nc);
+  for (int c = 0; c < nc; ++c) w.block(3 * c, 3 * c, 3, 3).diagonal().setConstant(w_node(c));
+  return w;
+}
+
+TEST(LinerContactSolve, PatchDiagonalWSatisfiesTheBarLaw) {
+  const int nc = 5;
+  const double dt = 1e-3, mu = 0.3;
+  const AbradableCells fresh(fine_geometry(), material());
+  const double k = fresh.stiffness(), kh = fresh.hardening_stiffness();
+  const double fy0 = 10.0 * fresh.area(); // A sigma_y
+  LinerContactSolve solve(nc, dt, mu, fresh, patch_layout(60.0, 8.0));
+  // c k from 0.2 to 10 (k = 6.1e4 N/mm).
+  Eigen::VectorXd w_node(nc);
+  w_node << 0.2 / k, 1.0 / k, 2.0 / k, 5.0 / k, 10.0 / k;
+  solve.set_contact_matrix(diagonal_w(w_node));
+  std::srand(41);
+  long responses = 0; // (contact, cell) pairs committed: a bound on the plastic increments
+  double worst = 0.0, law_bound = 0.0;
+  std::vector<double> wear = solve.cells().wear();
+  for (int step = 1; step <= 40; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+    // Closing by 0.03 to 0.09 past the unworn surface: every patch yields.
+    for (int c = 0; c < nc; ++c) predicted(3 * c) = -0.06 - 0.03 * predicted(3 * c);
+    const double t = step * dt;
+    std::vector<std::vector<int>> under(nc);
+    for (int c = 0; c < nc; ++c) under[c] = solve.cells_under(c, t);
+    std::map<int, BarState> chained; // the test's own chain: cell -> state left this step
+    for (int c = 0; c < nc; ++c)
+      for (int cell : under[c]) chained.emplace(cell, solve.cells().state(cell));
+    StepReport report;
+    solve.solve(predicted, step, report);
+    const Eigen::VectorXd& lambda = solve.lambda_next();
+    double lambda_max = 0.0;
+    for (int c = 0; c < nc; ++c) lambda_max = std::max(lambda_max, lambda(3 * c));
+    for (int c = 0; c < nc; ++c) {
+      // The final gap of node c (W diagonal): g = g~ + W_nn lambda_n.
+      const double ln = lambda(3 * c);
+      const double g = predicted(3 * c) + w_node(c) * ln;
+      double force = 0.0, p_max = 0.0;
+      for (int cell : under[c]) {
+        BarState& s = chained.at(cell);
+        p_max = std::max(p_max, s.wear);
+        const BarResponse r = solve.cells().bar(s, -g - s.wear);
+        force += r.force;
+        s = r.state;
+      }
+      // Tolerance (derived): -g - p_i rounds at eps (|g~| + W_nn lambda +
+      // p), twice, times k for each of the n bars; the multiplier's closed
+      // form rounds at (n + 8) eps of itself; and the tangential update in
+      // the same sweep does not move it (W diagonal).
+      const double n = static_cast<double>(under[c].size());
+      const double tolerance =
+          4.0 * n * k * eps * (std::abs(predicted(3 * c)) + w_node(c) * ln + p_max) +
+          4.0 * (n + 8.0) * eps * ln;
+      worst = std::max(worst, std::abs(ln - force) / tolerance);
+      EXPECT_LE(std::abs(ln - force), tolerance) << "step " << step << " node " << c;
+      // Coulomb with a diagonal W: the stick multiplier -s~ / w on the disk.
+      Eigen::Vector2d lt = -predicted.segment<2>(3 * c + 1) / w_node(c);
+      if (lt.norm() > mu * ln) lt *= mu * ln / lt.norm();
+      EXPECT_NEAR((lambda.segment<2>(3 * c + 1) - lt).norm(), 0.0, 16.0 * eps * lt.norm() + 1e-300);
+      responses += static_cast<long>(n);
+      // The certificate's compliant residual: the depth d~ = -(y - w lambda)
+      // rounds at eps (|g~| + 2 w lambda), which the compliant map (1 /
+      // w-Lipschitz) turns into eps (|g~| / w + 2 lambda); twice that, and
+      // the two closed forms' (n + 8) eps lambda.
+      if (lambda_max > 0.0)
+        law_bound =
+            std::max(law_bound, (2.0 * eps * (std::abs(predicted(3 * c)) / w_node(c) + 2.0 * ln) +
+                                 2.0 * (n + 8.0) * eps * ln) /
+                                    lambda_max);
+    }
+    const std::vector<double> now = solve.cells().wear();
+    for (size_t i = 0; i < now.size(); ++i) EXPECT_GE(now[i], wear[i]) << "cell " << i;
+    wear = now;
+  }
+  // W_plastic closed form (SPEC §9): sum_cells A (sigma_y p + H p^2 / (2 h))
+  // = sum_cells p (F_Y0 + k_H p / 2) in force variables (the increments'
+  // dp (F_Y + k_H dp / 2) telescope to it with linear hardening).
+  double closed = 0.0, worn = 0.0;
+  for (double p : wear) {
+    closed += p * (fy0 + 0.5 * kh * p);
+    worn += p > 0.0;
+  }
+  // Tolerance (derived): each increment's work and each cell's yield force
+  // update rounds at a few eps, accumulated over at most `responses` of them.
+  const double tolerance = 4.0 * static_cast<double>(responses) * eps * closed;
+  std::printf("patch, diagonal W: worst bar-law residual / tolerance %.3g; law residual %.3g "
+              "(bound %.3g); W_plastic %.9g vs closed form %.9g (difference %.3g, tolerance %.3g); "
+              "%g cells worn\n",
+              worst, solve.max_law_residual(), law_bound, solve.plastic_work(), closed,
+              std::abs(solve.plastic_work() - closed), tolerance, worn);
+  EXPECT_LE(solve.max_law_residual(), law_bound);
+  EXPECT_GT(closed, 0.0);
+  EXPECT_GT(worn, 8.0); // the patches spread the wear over many cells
+  EXPECT_NEAR(solve.plastic_work(), closed, tolerance);
+}
+
+// A run of both solves over the same predictions (dense W, friction,
+// yielding): `same` a layout with a zero-width patch, `base` one without.
+void run_alongside(LinerContactSolve& same, LinerContactSolve& base, const Eigen::MatrixXd& w,
+                   int steps, unsigned seed, double& largest_difference, double& largest_force) {
+  const int nc = static_cast<int>(w.rows()) / 3;
+  same.set_contact_matrix(w);
+  base.set_contact_matrix(w);
+  std::srand(seed);
+  largest_difference = largest_force = 0.0;
+  for (int step = 1; step <= steps; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+    for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.03;
+    StepReport a, b;
+    same.solve(predicted, step, a);
+    base.solve(predicted, step, b);
+    largest_difference = std::max(largest_difference,
+                                  (same.lambda_next() - base.lambda_next()).cwiseAbs().maxCoeff());
+    largest_force = std::max(largest_force, base.lambda_next().cwiseAbs().maxCoeff());
+  }
+}
+
+TEST(LinerContactSolve, ZeroWidthPatchIsTheOneCellSolve) {
+  const int nc = 5;
+  const AbradableCells cells(fine_geometry(), material());
+  const Eigen::MatrixXd w = dense_w(nc, 53, 0.5 / cells.stiffness());
+  LinerContactLayout none = patch_layout(0.0, 0.0);
+  none.patch = TipPatch{};
+  // Both widths 0: the same code path, bit for bit (liner_contact_solve.hpp).
+  LinerContactSolve zero(nc, 1e-3, 0.2, cells, patch_layout(0.0, 0.0));
+  LinerContactSolve base(nc, 1e-3, 0.2, cells, none);
+  double difference = 0.0, force = 0.0;
+  run_alongside(zero, base, w, 40, 61, difference, force);
+  EXPECT_EQ(difference, 0.0); // source: the same arithmetic
+  EXPECT_EQ(zero.cells().wear(), base.cells().wear());
+  EXPECT_EQ(zero.plastic_work(), base.plastic_work());
+  EXPECT_EQ(zero.elastic_energy(), base.elastic_energy());
+  EXPECT_GT(zero.plastic_work(), 0.0);
+  // A patch far narrower than a cell (1e-9 of its widths) presses the one
+  // cell under each node through the patch's own path: the forces equal
+  // the one-cell solve's where the bar's piece is classified alike, and
+  // otherwise to the rounding of the classification and of the bar law at
+  // delta~ - c F (a few eps (1 + c k) of the force, c k ~ 1 here), which
+  // the 40 steps' wear and the sweeps' stopping rule (1e-14 of the largest
+  // multiplier) carry: 1e-12 of the largest multiplier.
+  LinerContactSolve narrow(nc, 1e-3, 0.2, cells, patch_layout(1e-9 * 24.5, 1e-9 * 5.0));
+  LinerContactSolve again(nc, 1e-3, 0.2, cells, none);
+  run_alongside(narrow, again, w, 40, 61, difference, force);
+  for (int c = 0; c < nc; ++c) EXPECT_EQ(narrow.cells_under(c, 0.02).size(), 1u);
+  std::printf("narrow patch vs one cell: largest multiplier difference %.3g of %.3g; W_plastic "
+              "%.12g vs %.12g\n",
+              difference, force, narrow.plastic_work(), again.plastic_work());
+  EXPECT_LE(difference, 1e-12 * force);
+  EXPECT_NEAR(narrow.plastic_work(), again.plastic_work(), 1e-12 * again.plastic_work());
+}
+
+// Dense W, friction, overlapping patches: the certificate (bar law, cone,
+// stick and slip) at round-off, as DenseYieldingWithFrictionCertifies
+// checks the one-cell solve.
+TEST(LinerContactSolve, PatchDenseYieldingWithFrictionCertifies) {
+  const int nc = 5;
+  const AbradableCells cells(fine_geometry(), material());
+  const Eigen::MatrixXd w = dense_w(nc, 71, 0.5 / cells.stiffness());
+  for (double mu : {0.0, 0.3}) {
+    LinerContactSolve solve(nc, 1e-3, mu, cells, patch_layout(60.0, 8.0));
+    solve.set_contact_matrix(w);
+    std::srand(73);
+    double plastic = 0.0;
+    for (int step = 1; step <= 50; ++step) {
+      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+      for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.05;
+      StepReport report;
+      solve.solve(predicted, step, report);
+      // The solve's own stopping rule puts these at round-off (header).
+      EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
+      EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "mu " << mu << " step " << step;
+      EXPECT_GE(solve.plastic_work(), plastic);
+      plastic = solve.plastic_work();
+    }
+    std::printf("patch, dense W, mu %g: law residual %.3g, W_plastic %.6g, sweeps %ld\n", mu,
+                solve.max_law_residual(), plastic, solve.sweeps());
+    EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;
+    EXPECT_GT(plastic, 0.0);
   }
 }
 

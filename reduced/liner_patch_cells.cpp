@@ -1,0 +1,144 @@
+#include "liner_patch_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "message_number.hpp"
+
+namespace rsi {
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& what) {
+  throw std::invalid_argument("LinerPatchCells: " + what);
+}
+
+void width(double w, const char* name) {
+  if (!(std::isfinite(w) && w >= 0.0))
+    refuse(std::string(name) + " = " + message_number(w) + ", allowed finite and >= 0");
+}
+
+/// The integers i with centre (i + 1/2) h in [from, to] (closed): first and
+/// last; last < first when there is none.
+void centres_within(double from, double to, double h, double& first, double& last) {
+  first = std::ceil(from / h - 0.5);
+  last = std::floor(to / h - 0.5);
+}
+
+} // namespace
+
+std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double angle) {
+  width(angle, "angular width");
+  const int home = cells.sector(theta); // refuses a non-finite angle
+  const double turn = 2.0 * M_PI;
+  const double a = theta - turn * std::floor(theta / turn);
+  double first = 0.0, last = 0.0;
+  centres_within(a - 0.5 * angle, a + 0.5 * angle, cells.pitch(), first, last);
+  const int n = cells.n_theta();
+  std::vector<int> sectors;
+  if (!(last >= first)) {
+    sectors.push_back(home);
+  } else if (last - first + 1.0 >= n) {
+    for (int i = 0; i < n; ++i)
+      sectors.push_back(i);
+  } else {
+    // Fewer than n integers with a in [0, 2 pi): all within (-2 n, 2 n).
+    for (long long i = static_cast<long long>(first); i <= static_cast<long long>(last); ++i)
+      sectors.push_back(static_cast<int>(((i % n) + n) % n));
+    std::sort(sectors.begin(), sectors.end());
+  }
+  return sectors;
+}
+
+std::vector<int> patch_rows(const AbradableCells& cells, double z, double width_axial) {
+  width(width_axial, "axial width");
+  const int home = cells.row(z); // refuses z outside the liner
+  const double z_min = cells.geometry().z_min;
+  double first = 0.0, last = 0.0;
+  centres_within(z - 0.5 * width_axial - z_min, z + 0.5 * width_axial - z_min, cells.row_height(),
+                 first, last);
+  first = std::max(first, 0.0);
+  last = std::min(last, static_cast<double>(cells.n_axial() - 1));
+  std::vector<int> rows;
+  if (!(last >= first)) {
+    rows.push_back(home);
+  } else {
+    for (int j = static_cast<int>(first); j <= static_cast<int>(last); ++j)
+      rows.push_back(j);
+  }
+  return rows;
+}
+
+std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z,
+                             const TipPatch& patch) {
+  width(patch.circumferential, "circumferential width");
+  const std::vector<int> rows = patch_rows(cells, z, patch.axial);
+  const std::vector<int> sectors =
+      patch_sectors(cells, theta, patch.circumferential / cells.geometry().radius);
+  std::vector<int> out;
+  out.reserve(rows.size() * sectors.size());
+  for (int j : rows)
+    for (int i : sectors)
+      out.push_back(j * cells.n_theta() + i);
+  return out;
+}
+
+double patch_compliant(const AbradableCells& cells, const std::vector<BarState>& from,
+                       double depth_pred, double compliance, std::vector<BarResponse>& bars) {
+  const size_t n = from.size();
+  if (n == 0) refuse("a patch over no cell");
+  if (!(compliance >= 0.0)) refuse("compliance = " + message_number(compliance) + ", allowed >= 0");
+  const double k = cells.stiffness(), kh = cells.hardening_stiffness();
+  const auto yield_depth = [k](const BarState& s) { return s.wear + s.yield_force / k; };
+  // The breakpoints of G (header), and the piece holding the root: it starts
+  // at the largest b with c G(b) <= d~ - b, G(b) from wear differences only.
+  std::vector<double> breaks;
+  breaks.reserve(2 * n);
+  for (const BarState& s : from) {
+    breaks.push_back(s.wear);
+    breaks.push_back(yield_depth(s));
+  }
+  std::sort(breaks.begin(), breaks.end());
+  const auto at_or_past = [&](double b) {
+    double g = 0.0;
+    for (const BarState& s : from)
+      g += cells.bar(s, b - s.wear).force;
+    return compliance * g <= depth_pred - b;
+  };
+  long lo = -1, hi = static_cast<long>(breaks.size());
+  while (hi - lo > 1) {
+    const long mid = lo + (hi - lo) / 2;
+    (at_or_past(breaks[static_cast<size_t>(mid)]) ? lo : hi) = mid;
+  }
+  double force = 0.0;
+  if (lo >= 0) {
+    const double start = breaks[static_cast<size_t>(lo)];
+    double n_elastic = 0.0, n_plastic = 0.0, sum_elastic = 0.0, sum_plastic = 0.0;
+    for (const BarState& s : from) {
+      if (!(s.wear <= start)) continue; // not touching on this piece
+      const double delta_pred = depth_pred - s.wear;
+      if (yield_depth(s) <= start) {
+        n_plastic += 1.0;
+        sum_plastic += k * (kh * delta_pred + s.yield_force);
+      } else {
+        n_elastic += 1.0;
+        sum_elastic += k * delta_pred;
+      }
+    }
+    // The piece's closed form (header), term for term
+    // AbradableCells::compliant's with one bar.
+    if (n_plastic == 0.0)
+      force = sum_elastic / (1.0 + compliance * (n_elastic * k));
+    else
+      force = ((k + kh) * sum_elastic + sum_plastic) /
+              ((k + kh) * (1.0 + compliance * (n_elastic * k)) + compliance * k * kh * n_plastic);
+  }
+  bars.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    bars[i] = cells.bar(from[i], (depth_pred - from[i].wear) - compliance * force);
+  return force;
+}
+
+} // namespace rsi
