@@ -441,6 +441,7 @@ lin='"thickness": 1, "young_modulus": 1000, "hardening_modulus": 0'
 rubbing_variant liner-yield "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": -1, \"cells_around\": 10}}"
 rubbing_variant liner-cells "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": 1, \"cells_around\": 0}}"
 rubbing_variant liner-z "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": 1, \"cells_around\": 10, \"z_min\": 0}}"
+rubbing_variant liner-patch "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": 1, \"cells_around\": 10, \"tip_patch\": {\"circumferential\": 5.0, \"axial\": 0}}}"
 expect 2 "key 'rubbing': missing (a contact run of a component needs" -- "$rsi" simulate "$work/ccx-good.json" --out "$work/out"
 # A contact node ccx expanded (a beam, shell or plane node: a row per
 # expanded node and direction) and a response node ccx created (above the
@@ -464,6 +465,7 @@ expect 2 "key 'rubbing.colour': unknown key" -- "$rsi" simulate "$work/rubbing-u
 expect 2 "key 'rubbing.liner.yield_stress': must be in (0, inf) (stress), got -1" -- "$rsi" simulate "$work/rubbing-liner-yield.json" --out "$work/out"
 expect 2 "key 'rubbing.liner.cells_around': must be an integer in [1, 10000000], got 0" -- "$rsi" simulate "$work/rubbing-liner-cells.json" --out "$work/out"
 expect 2 "key 'rubbing.liner.z_max': must be given with z_min" -- "$rsi" simulate "$work/rubbing-liner-z.json" --out "$work/out"
+expect 2 "key 'rubbing.liner.tip_patch.axial': must be in (0, inf) (length), got 0" -- "$rsi" simulate "$work/rubbing-liner-patch.json" --out "$work/out"
 expect 2 "key 'component.mass': must be \"consistent\" or \"lumped\" (HRZ), got \"diagonal\"" -- "$rsi" simulate "$work/rubbing-mass.json" --out "$work/out"
 expect 2 "key 'component.rotation_effects': needs ccx to run the deck under the centrifugal load, and source.calculix_matrices names matrices already written" -- "$rsi" simulate "$work/rubbing-rotation-matrices.json" --out "$work/out"
 expect 2 "key 'component.rotation_effects': must be true or false, got 1" -- "$rsi" simulate "$work/rubbing-rotation-type.json" --out "$work/out"

@@ -301,7 +301,7 @@ EXEMPT = {"description": "free text", "damping.note": "free text", "sweep.note":
 # so every variant gives that one message. Not free text: a known gap (a
 # base model the liner accepts is needed here).
 for _k in ("thickness", "young_modulus", "yield_stress", "hardening_modulus", "cells_around",
-           "rows", "z_min", "z_max"):
+           "rows", "z_min", "z_max", "tip_patch"):
     EXEMPT["rubbing.liner." + _k] = "not walked yet: the brick's liner run is refused (its W is not c I per node)"
 GMSH_KEYS = ["span", "chord", "thickness", "camber", "twist_deg", "stagger_deg", "root_length",
              "root_width", "root_height", "root_radius", "element_size", "young_modulus",
