@@ -139,6 +139,7 @@ struct ComponentExpectation {
   double revolutions = 0.0;
   double sliding_sign = 1.0;   ///< Omega_s / Omega
   bool lumped = false;         ///< component.mass "lumped": M diagonal (HRZ)
+  int steps_per_revolution = 1000;
 };
 
 void expect_component(const std::string& name, const ComponentExpectation& e) {
@@ -171,14 +172,14 @@ void expect_component(const std::string& name, const ComponentExpectation& e) {
   EXPECT_EQ(p.contact.friction_law, FrictionLaw::coulomb);
   EXPECT_EQ(p.contact.friction_coefficient, e.mu);
   // rubbing: Omega = 1344 rad/s, oval gap g_m = 0.356 mm, w = 0.15,
-  // N = 1000 samples a revolution, step_safety 0.9.
+  // N samples a revolution (1000 unless the case says), step_safety 0.9.
   EXPECT_EQ(p.contact.rotation_speed, 1344.0);
   EXPECT_EQ(p.contact.sliding_speed, e.sliding_sign * 1344.0);
   EXPECT_TRUE(p.casing.oval_gap);
   EXPECT_EQ(p.casing.gap, 0.356);
   EXPECT_EQ(p.casing.gap_width, 0.15);
   EXPECT_EQ(p.steps.rule, ProblemSteps::Rule::per_revolution);
-  EXPECT_EQ(p.steps.steps_per_revolution, 1000);
+  EXPECT_EQ(p.steps.steps_per_revolution, e.steps_per_revolution);
   EXPECT_EQ(p.steps.revolutions, e.revolutions);
   EXPECT_EQ(p.steps.step_safety, 0.9);
   EXPECT_EQ(p.outputs.output_every, 1);
@@ -199,15 +200,25 @@ void expect_component(const std::string& name, const ComponentExpectation& e) {
 /// H 1e3 MPa, 200 cells around, one row), its surface at the contact nodes'
 /// largest radius about z and its axial extent their span widened by 5 %
 /// a side (problem.cpp).
-void expect_liner(const Problem& p) {
+/// The cells and tip patch a liner case gives (the case file's values).
+struct LinerExpectation {
+  int n_theta = 0;
+  int n_axial = 0;
+  double patch_circumferential = 0.0; ///< 0: no tip patch
+  double patch_axial = 0.0;
+};
+
+void expect_liner(const Problem& p, const LinerExpectation& e) {
   ASSERT_TRUE(p.casing.liner.has_value());
   const ProblemLiner& l = *p.casing.liner;
   EXPECT_EQ(l.thickness, 2.0);
   EXPECT_EQ(l.young, 1e4);
   EXPECT_EQ(l.yield, 10.0);
   EXPECT_EQ(l.hardening, 1e3);
-  EXPECT_EQ(l.n_theta, 200);
-  EXPECT_EQ(l.n_axial, 1);
+  EXPECT_EQ(l.n_theta, e.n_theta);
+  EXPECT_EQ(l.n_axial, e.n_axial);
+  EXPECT_EQ(l.patch_circumferential, e.patch_circumferential);
+  EXPECT_EQ(l.patch_axial, e.patch_axial);
   const Component& c = p.structures[0];
   double radius = 0.0, z_low = 1e300, z_high = -1e300;
   for (int id : p.contact.contact_nodes)
@@ -239,11 +250,13 @@ TEST(Problem, GmshBladeCases) {
   const Problem rotating = load_problem(case_path("blade3d-rubbing-rotating.json"), {"", cache_dir()});
   ASSERT_EQ(rotating.casing.tip_growth.size(), 16u);
   for (double g : rotating.casing.tip_growth) EXPECT_GT(g, 0.0);
-  // The same cutting the soft abradable liner over half a revolution: the
-  // case's liner keys (h 2 mm, E 1e4, sigma_y 10, H 1e3 MPa, 200 cells, one
-  // row) and the unworn surface at the contact nodes' largest radius.
-  expect_component("blade3d-rubbing-liner.json", {4101, 16, 11, 0.05, 0.5, 1.0, true});
-  expect_liner(load_problem(case_path("blade3d-rubbing-liner.json"), {"", cache_dir()}));
+  // The same cutting the soft abradable liner over half a revolution at
+  // 2000 samples: the case's liner keys (h 2 mm, E 1e4, sigma_y 10, H 1e3
+  // MPa, 1600 cells, 8 rows, 2.5 x 3.0 mm tip patches) and the unworn
+  // surface at the contact nodes' largest radius.
+  expect_component("blade3d-rubbing-liner.json", {4101, 16, 11, 0.05, 0.5, 1.0, true, 2000});
+  expect_liner(load_problem(case_path("blade3d-rubbing-liner.json"), {"", cache_dir()}),
+               {1600, 8, 2.5, 3.0});
 }
 
 // Rotor 37 (shared/external/rotor37/README.md): 61,098 dofs, 16 contact
@@ -267,7 +280,8 @@ TEST(Problem, Rotor37RubbingLinerCase) {
   if (const std::string why = component_missing("rotor37"); !why.empty())
     GTEST_SKIP() << "not run: " << why;
   expect_component("rotor37-rubbing-liner.json", {61098, 16, 1353, 0.15, 50.0, -1.0, false});
-  expect_liner(load_problem(case_path("rotor37-rubbing-liner.json"), {"", cache_dir()}));
+  expect_liner(load_problem(case_path("rotor37-rubbing-liner.json"), {"", cache_dir()}),
+               {200, 1, 0.0, 0.0});
 }
 
 TEST(Problem, Rotor37RubbingLumpedCase) {
