@@ -47,12 +47,7 @@ sanitized=${4:-0}
 case_name=${5:-data/cases/blade3d-rubbing.json}
 threshold_file=$src/${6:-data/thresholds/blade3d-rubbing.json}
 short=0
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/skip_without_gmsh_ccx.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 case_file=$src/$case_name

@@ -66,12 +66,7 @@ if [ "$sanitized" = 1 ]; then
   mesh=(component.source.gmsh_blade.element_size=20.0)
   echo "sanitizer build: the soft liner on element_size 20, full, cb 20 and macneal 20, over 0.3 revolution (checks 2-4; check 1 in Release)"
 fi
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/skip_without_gmsh_ccx.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 variant() { /usr/bin/python3 "$src/verification/cli/case_variant.py" "$src/data/cases/blade3d-rubbing.json" "$@" "${mesh[@]}"; }

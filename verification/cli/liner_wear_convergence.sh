@@ -29,12 +29,7 @@ cache=$3
 shift 3
 methods=("$@")
 [ ${#methods[@]} -gt 0 ] || methods=(full)
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/skip_without_gmsh_ccx.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cells="800 1600 3200 6400"

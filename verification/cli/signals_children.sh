@@ -31,12 +31,7 @@ set -u
 rsi=$1
 src=$2
 cache=$3
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/skip_without_gmsh_ccx.sh"
 deck=$src/data/cases/../../../shared/external/rotor37/blade.inp
 if [ ! -f "$deck" ]; then
   echo "skipped: the Rotor 37 deck ../shared/external/rotor37/blade.inp is not there"

@@ -16,12 +16,7 @@ set -u
 rsi=$1
 src=$2
 cache=$3
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/skip_without_gmsh_ccx.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 variant() { /usr/bin/python3 "$src/verification/cli/case_variant.py" "$@"; }

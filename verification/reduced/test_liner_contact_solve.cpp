@@ -199,6 +199,26 @@ TEST(LinerContactSolve, DenseElasticFrictionlessIsTheLcp) {
   }
 }
 
+/// 50 steps of random predictions pushed `push` into the liner, each
+/// certified: the solve's own stopping rule puts the cone and stick/slip
+/// residuals at round-off (header); W_plastic never decreases. Returns it.
+double certified_random_steps(LinerContactSolve& solve, int nc, double push, unsigned seed,
+                              double mu) {
+  std::srand(seed);
+  double plastic = 0.0;
+  for (int step = 1; step <= 50; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+    for (int c = 0; c < nc; ++c) predicted(3 * c) -= push;
+    StepReport report;
+    solve.solve(predicted, step, report);
+    EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
+    EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "mu " << mu << " step " << step;
+    EXPECT_GE(solve.plastic_work(), plastic);
+    plastic = solve.plastic_work();
+  }
+  return plastic;
+}
+
 TEST(LinerContactSolve, DenseYieldingWithFrictionCertifies) {
   const int nc = 6;
   const std::vector<double> phi = {0.1, 0.2, 1.7, 2.5, 3.3, 5.0}; // nodes 0, 1 share a bar
@@ -207,19 +227,7 @@ TEST(LinerContactSolve, DenseYieldingWithFrictionCertifies) {
   for (double mu : {0.05, 0.3}) {
     LinerContactSolve solve(nc, 1e-3, mu, cells, layout(phi));
     solve.set_contact_matrix(w);
-    std::srand(9);
-    double plastic = 0.0;
-    for (int step = 1; step <= 50; ++step) {
-      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
-      for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.02;
-      StepReport report;
-      solve.solve(predicted, step, report);
-      // The solve's own stopping rule puts these at round-off (header).
-      EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
-      EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "mu " << mu << " step " << step;
-      EXPECT_GE(solve.plastic_work(), plastic);
-      plastic = solve.plastic_work();
-    }
+    const double plastic = certified_random_steps(solve, nc, 0.02, 9, mu);
     EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;
     EXPECT_GT(plastic, 0.0);
   }
@@ -445,19 +453,7 @@ TEST(LinerContactSolve, PatchDenseYieldingWithFrictionCertifies) {
   for (double mu : {0.0, 0.3}) {
     LinerContactSolve solve(nc, 1e-3, mu, cells, patch_layout(60.0, 8.0));
     solve.set_contact_matrix(w);
-    std::srand(73);
-    double plastic = 0.0;
-    for (int step = 1; step <= 50; ++step) {
-      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
-      for (int c = 0; c < nc; ++c) predicted(3 * c) -= 0.05;
-      StepReport report;
-      solve.solve(predicted, step, report);
-      // The solve's own stopping rule puts these at round-off (header).
-      EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
-      EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "mu " << mu << " step " << step;
-      EXPECT_GE(solve.plastic_work(), plastic);
-      plastic = solve.plastic_work();
-    }
+    const double plastic = certified_random_steps(solve, nc, 0.05, 73, mu);
     std::printf("patch, dense W, mu %g: law residual %.3g, W_plastic %.6g, sweeps %ld\n", mu,
                 solve.max_law_residual(), plastic, solve.sweeps());
     EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;

@@ -47,12 +47,7 @@
 set -u
 rsi=$1
 src=$2
-for tool in gmsh ccx; do
-  if ! command -v "$tool" >/dev/null; then
-    echo "skipped: $tool is not on PATH (Debian packages gmsh, calculix-ccx)"
-    exit 77
-  fi
-done
+. "$(dirname "$0")/../cli/skip_without_gmsh_ccx.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cache=${3:-$work/ccx}
