@@ -14,6 +14,9 @@ namespace rsi {
 namespace {
 
 const std::string kWhere = "ComponentIntegrator (abradable liner): ";
+// Sweeps in a row whose change stays at or below the round-off floor
+// relative_change x S before the step is taken as converged (header).
+constexpr int kStagnationSweeps = 100;
 
 struct DiskSolution {
   Eigen::Vector2d x = Eigen::Vector2d::Zero();
@@ -292,20 +295,22 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
     }
   if (any) {
     for (;;) {
-      int sweeps = 0;
+      int sweeps = 0, at_floor = 0;
       for (;;) {
         const double change = sweep(predicted);
         ++sweeps;
         if (std::isnan(change)) fail(step, "a tangential block of W is not positive definite or its disk solve did not converge");
         const double size = m_lambda.cwiseAbs().maxCoeff();
         if (change <= m_options.relative_change * size) break;
-        if (change <= 100.0 * m_options.relative_change * size &&
-            change <= m_options.relative_change * rounding_scale(predicted))
-          break;
+        const bool below_floor = change <= m_options.relative_change * rounding_scale(predicted);
+        if (below_floor && change <= 100.0 * m_options.relative_change * size) break;
+        at_floor = below_floor ? at_floor + 1 : 0;
+        if (at_floor >= kStagnationSweeps) break;
         if (sweeps >= m_options.max_sweeps)
           fail(step, "the Gauss-Seidel sweeps did not converge in " +
                          std::to_string(m_options.max_sweeps) + " (last change " +
-                         message_number(change) + " of multipliers up to " + message_number(size) + ")");
+                         message_number(change) + " of multipliers up to " + message_number(size) +
+                         ", round-off scale " + message_number(rounding_scale(predicted)) + ")");
       }
       m_sweeps += sweeps;
       // Grow: a contact the others' forces push into its bar joins.

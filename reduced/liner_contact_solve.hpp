@@ -37,7 +37,13 @@
 // the rounding of y_c's terms moves the local solve by (its normal update
 // is 1/W_nn-Lipschitz in y_c). A step whose only forces are small next to
 // the gaps' terms cannot reach Delta <= 1e-14 L (measured: Rotor 37,
-// MacNeal-50, a 4.3 N contact stuck at 1.5e-14 of it for 20,000 sweeps). With mu = 0 each row update is an exact coordinate
+// MacNeal-50, a 4.3 N contact stuck at 1.5e-14 of it for 20,000 sweeps).
+// Nor, sometimes, 1e-12 L: with tip patches over a worn liner (Rotor 37,
+// 4096 x 80 cells, 830 rad/s) a 0.55 N contact sat at a change of 1.1e-12 N
+// (2e-12 of L) for 20,000 sweeps while S was 8,468 N (the floor 8.5e-11 N):
+// so a solve whose change stays at or below relative_change x S for 100
+// sweeps in a row has stagnated at its round-off floor and stops too (the
+// certificate below then checks the law). With mu = 0 each row update is an exact coordinate
 // minimisation of the convex 1/2 l^T W l + g~^T l + sum_c Phi_c(lambda_n,c)
 // (Phi_c the conjugate of the bar's monotone law shifted by p; a single
 // tip per cell), so the sweeps converge (Luo and Tseng 1992); mu > 0 is a
