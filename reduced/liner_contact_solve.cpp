@@ -134,6 +134,9 @@ void LinerContactSolve::set_contact_matrix(const Eigen::MatrixXd& w) {
   m_w = 0.5 * (w + w.transpose()).eval();
   m_wtt.resize(m_nc);
   for (int c = 0; c < m_nc; ++c) m_wtt[c] = m_w.block<2, 2>(3 * c + 1, 3 * c + 1);
+  m_w_row_abs.resize(m_nc);
+  for (int c = 0; c < m_nc; ++c)
+    m_w_row_abs(c) = m_w.row(3 * c).cwiseAbs().sum() / m_w(3 * c, 3 * c);
   start();
 }
 
@@ -255,6 +258,15 @@ double LinerContactSolve::sweep(const Eigen::VectorXd& predicted) {
   return change;
 }
 
+double LinerContactSolve::rounding_scale_bound(const Eigen::VectorXd& predicted,
+                                               double size) const {
+  double bound = 0.0;
+  for (int c = 0; c < m_nc; ++c)
+    if (m_active[c])
+      bound = std::max(bound, std::abs(predicted(3 * c)) / m_w(3 * c, 3 * c) + m_w_row_abs(c) * size);
+  return bound * (1.0 + 1e-12); // its own rounding: never below S as computed
+}
+
 double LinerContactSolve::rounding_scale(const Eigen::VectorXd& predicted) const {
   double scale = 0.0;
   for (int c = 0; c < m_nc; ++c) {
@@ -302,7 +314,10 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
         if (std::isnan(change)) fail(step, "a tangential block of W is not positive definite or its disk solve did not converge");
         const double size = m_lambda.cwiseAbs().maxCoeff();
         if (change <= m_options.relative_change * size) break;
-        const bool below_floor = change <= m_options.relative_change * rounding_scale(predicted);
+        // S itself only near the floor (its bound is O(n_c), S O(n_c^2)).
+        const bool below_floor =
+            change <= m_options.relative_change * rounding_scale_bound(predicted, size) &&
+            change <= m_options.relative_change * rounding_scale(predicted);
         if (below_floor && change <= 100.0 * m_options.relative_change * size) break;
         at_floor = below_floor ? at_floor + 1 : 0;
         if (at_floor >= kStagnationSweeps) break;

@@ -148,6 +148,9 @@ public:
 private:
   /// S of the stopping rule (header), over the active contacts.
   double rounding_scale(const Eigen::VectorXd& predicted) const;
+  /// An upper bound of S for multipliers up to `size`:
+  /// max_c (|predicted_c| / W_nn,c + size sum_j |W_cj| / W_nn,c).
+  double rounding_scale_bound(const Eigen::VectorXd& predicted, double size) const;
   /// One sweep over the active contacts; returns the largest change.
   double sweep(const Eigen::VectorXd& predicted);
   /// The state contact c's bar starts from this step (the chain of the header).
@@ -175,6 +178,7 @@ private:
   double m_omega;
   Eigen::MatrixXd m_w;
   std::vector<Eigen::Matrix2d> m_wtt;
+  Eigen::VectorXd m_w_row_abs; ///< sum_j |W_cj| / W_nn,c over each normal row c
   Eigen::VectorXd m_lambda, m_y;
   std::vector<ReducedContactState> m_state;
   std::vector<int> m_cell;             ///< per contact, this step
