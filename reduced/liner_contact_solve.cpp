@@ -389,15 +389,30 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
   if (!(law <= m_options.law_tolerance))
     fail(step, "the bars' law holds only to " + message_number(law) + " of the largest force (allowed " +
                    message_number(m_options.law_tolerance) + ")");
+  int worn_through = -1;
+  const auto keep = [&](int cell, const BarResponse& response) {
+    m_cells.commit(cell, response);
+    if (worn_through < 0 && m_cells.state(cell).wear >= m_cells.geometry().thickness)
+      worn_through = cell;
+  };
   for (int c = 0; c < m_nc; ++c) {
     if (!m_active[c]) continue;
     if (!m_patched) {
-      m_cells.commit(m_cell[c], m_response[c]);
+      keep(m_cell[c], m_response[c]);
       continue;
     }
     for (size_t i = 0; i < m_patch_cells[c].size(); ++i)
-      m_cells.commit(m_patch_cells[c][i], m_patch_response[c][i]);
+      keep(m_patch_cells[c][i], m_patch_response[c][i]);
   }
+  if (worn_through >= 0)
+    throw ComponentIntegrationError(
+        kWhere + "step " + std::to_string(step) + " (t = " + message_number(step * m_dt) +
+            " s): the abradable liner is worn through at sector " +
+            std::to_string(worn_through % m_cells.n_theta()) + ", row " +
+            std::to_string(worn_through / m_cells.n_theta()) + ": wear " +
+            message_number(m_cells.state(worn_through).wear) + " >= its thickness " +
+            message_number(m_cells.geometry().thickness),
+        remedied_by({Remedy::thicker_liner_or_larger_clearance}));
   report.max_cone_violation = std::max(cone, 0.0);
   report.max_stick_slip_residual = std::max(slip_scale > 0.0 ? stick / slip_scale : 0.0,
                                             force_scale > 0.0 ? slip / force_scale : 0.0);

@@ -87,6 +87,11 @@
 // Commit: the step's responses become the cells' states in node order
 // (wear never decreases), their plastic work is summed; the bars' elastic
 // energy sum F^2 / (2 k) of the step is kept for the energy balance.
+//
+// Worn through: a cell whose committed wear reaches the liner's thickness h
+// (its bar consumed: past it the tip would cut the backing, which the model
+// holds rigid and does not contact) ends the run, thrown after the commit
+// as a ComponentIntegrationError naming the sector, row, wear and h.
 
 #include <string>
 #include <vector>

@@ -70,6 +70,10 @@ const char* remedy_words(Remedy remedy) {
     return "; use a smaller rubbing.step_safety, without --force";
   case Remedy::smaller_step_safety_or_friction:
     return "; use a smaller rubbing.step_safety or rubbing.friction_coefficient";
+  case Remedy::thicker_liner_or_larger_clearance:
+    return "; the liner model (bars in front of a rigid backing) ends there: give a thicker "
+           "liner (rubbing.liner.thickness), a harder one (rubbing.liner.yield_stress), or a "
+           "larger clearance (rubbing.gap)";
   }
   return "";
 }

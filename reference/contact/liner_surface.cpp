@@ -1,5 +1,6 @@
 #include "liner_surface.hpp"
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -66,6 +67,15 @@ void LinerSurface::commit_step() {
   for (const Pending& p : m_pending) {
     m_liner.commit(p.cell, p.response);
     m_elastic_energy += p.response.force * p.response.force / (2.0 * k);
+    const double h = m_liner.geometry().thickness;
+    if (m_worn_through.empty() && p.response.state.wear >= h) {
+      std::ostringstream m;
+      m.precision(6);
+      m << "the abradable liner is worn through at sector " << p.cell % m_liner.n_theta()
+        << ", row " << p.cell / m_liner.n_theta() << ": wear " << p.response.state.wear
+        << " >= its thickness " << h;
+      m_worn_through = m.str();
+    }
   }
   m_pending.clear();
 }

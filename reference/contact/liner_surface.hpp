@@ -28,9 +28,16 @@
 // become those of the responses, the plastic work is added, the elastic
 // energy sum F^2 / (2 k) of the step's bars kept for the energy balance).
 //
+// Worn through. A bar's wear cannot reach its length h: past it the tip
+// would cut into the backing the model holds rigid and does not contact.
+// commit_step() notes the first cell whose committed wear reaches h
+// (worn_through(): its sector, row, wear and h); the integrator stops the
+// run there with that message (central_difference.cpp).
+//
 // Units: the model's. Owns the liner (states), references the rigid law
 // (which must outlive it).
 
+#include <string>
 #include <vector>
 
 #include "abradable_liner.hpp"
@@ -60,6 +67,9 @@ public:
   double respond(int contact, double t_next, double rigid_gap, double compliance);
   /// Keeps the step's responses (header).
   void commit_step();
+  /// Empty until a committed cell's wear reaches the liner's thickness h;
+  /// then what happened, naming the cell (header).
+  const std::string& worn_through() const { return m_worn_through; }
 
   /// Sum of F^2 / (2 k) over the last committed step's responses.
   double elastic_energy() const { return m_elastic_energy; }
@@ -76,6 +86,7 @@ private:
   std::vector<std::vector<int>> m_rows; ///< per contact: its row, or its patch's rows
   std::vector<Pending> m_pending;
   double m_elastic_energy = 0.0;
+  std::string m_worn_through;
 };
 
 } // namespace rsi

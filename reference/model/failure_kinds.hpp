@@ -62,6 +62,7 @@ enum class Remedy {
   friction_or_smaller_step,                ///< a full-order run's contact problem has no solution
   smaller_step_safety_unforced,            ///< a reduced component run blew up
   smaller_step_safety_or_friction,         ///< a reduced component run's contact solve failed
+  thicker_liner_or_larger_clearance,       ///< a tip wore the abradable liner through
 };
 
 /// Which input failed and what to change, in the kernel's terms.

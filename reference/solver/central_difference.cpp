@@ -635,7 +635,13 @@ StepReport CentralDifference::step_coulomb() {
       }
   }
   advance();
-  if (m_liner) m_liner->commit_step();
+  if (m_liner) {
+    m_liner->commit_step();
+    if (!m_liner->worn_through().empty())
+      throw IntegrationError("central differences: step " + std::to_string(m_n) + " (t = " +
+                                 std::to_string(t_next) + " s): " + m_liner->worn_through(),
+                             remedied_by({Remedy::thicker_liner_or_larger_clearance}));
+  }
 
   // Monitors at the corrected state: the law at (u_n, u_{n+1}) (m_x is still
   // u_n on the law's dofs); without a correction u_{n+1} is the prediction.

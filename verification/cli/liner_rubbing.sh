@@ -42,6 +42,10 @@
 #     bars at t = 0, whose energy is in E0; the balance closes to the same
 #     1e-8 for every method (it was broken at step 1 until session 18, a
 #     Rotor 37 map above 1640 rad/s where the tips' growth closes the gap).
+#  5. A liner thinner than the wear (the soft liner at h = 0.02 mm): each
+#     method's run stops where a cell's wear reaches h (worn through: the
+#     model has no backing to meet), exit 3, summary not completed, its
+#     status naming the liner worn through and its thickness.
 # The reduced runs' wear against the full run's is liner_campaign's
 # (data/thresholds/blade3d-rubbing-liner.json).
 # Skipped (exit 77) without gmsh or ccx. About 20 s in Release.
@@ -78,6 +82,8 @@ variant "$work/pressed.json" "rubbing.revolutions=0.1" "rubbing.campaign.full_re
   'rubbing.liner={"thickness": 2.0, "young_modulus": 10000.0, "yield_stress": 10.0, "hardening_modulus": 1000.0, "cells_around": 200}'
 variant "$work/soft.json" "rubbing.revolutions=$length" "rubbing.campaign.full_revolutions=$length" \
   'rubbing.liner={"thickness": 2.0, "young_modulus": 10000.0, "yield_stress": 10.0, "hardening_modulus": 1000.0, "cells_around": 200}'
+variant "$work/thin.json" "rubbing.revolutions=$length" "rubbing.campaign.full_revolutions=$length" \
+  'rubbing.liner={"thickness": 0.02, "young_modulus": 10000.0, "yield_stress": 10.0, "hardening_modulus": 1000.0, "cells_around": 200}'
 for method in $methods; do
   modes=()
   [ "$method" = full ] || modes=(--modes 20)
@@ -88,6 +94,13 @@ for method in $methods; do
       exit 1
     fi
   done
+  "$rsi" simulate "$work/thin.json" --method "$method" "${modes[@]}" --ccx-cache "$cache" \
+    --out "$work/$method-thin" >"$work/$method-thin.log" 2>&1
+  status=$?
+  if [ "$status" -ne 3 ]; then
+    echo "FAIL: the $method run on a liner of 0.02 mm exited $status (3 expected: worn through): $(tail -n 3 "$work/$method-thin.log")"
+    exit 1
+  fi
 done
 /usr/bin/python3 - "$work" "$sanitized" "$methods" <<'PY'
 import csv, json, sys
@@ -181,5 +194,9 @@ for m in methods:
           % (m, sp["status"][:60], sp["energy_balance_error"] / max(sp["energy_scale"], 1e-300), sp["energy_scale"]))
     check(rp[0][hp.index("lambda_1")] >= 0.0 and max(r[hp.index("lambda_1")] for r in rp) > 0.0,
           "%s pressed: node 1 carries a force (max %.4g)" % (m, max(r[hp.index("lambda_1")] for r in rp)))
+    # 5. Worn through.
+    st = json.load(open(f"{work}/{m}-thin/summary.json"))
+    check(not st["completed"] and "worn through" in st["status"] and "thickness 0.02" in st["status"],
+          "%s liner of 0.02 mm: stopped, %s" % (m, st["status"][:160]))
 sys.exit(1 if failures else 0)
 PY

@@ -22,12 +22,14 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
 #include "abradable_liner.hpp"
+#include "component_integration_error.hpp"
 #include "coulomb_node_solve.hpp"
 #include "liner_contact_solve.hpp"
 
@@ -459,6 +461,56 @@ TEST(LinerContactSolve, PatchDenseYieldingWithFrictionCertifies) {
     EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;
     EXPECT_GT(plastic, 0.0);
   }
+}
+
+} // namespace
+} // namespace rsi
+
+namespace rsi {
+namespace {
+
+// Worn through (liner_contact_solve.hpp, "Worn through"): one node (W =
+// c I, c = 1e-9 mm/N) pressing a liner of h = 0.1 mm 0.02 mm deeper each
+// step (E 1000, sigma_y 10, H 300 MPa). Loaded monotonically the bar stays
+// on its yield line, sigma = sigma_y + H p / h, and the node's predicted
+// depth is d~ = p + sigma h / E + c A sigma, so
+//   p = (d~ - sigma_y h / E - c A sigma_y) / (1 + H / E + c A H / h):
+// 0.0907 mm at step 6 (d~ = 0.12), 0.1059 mm at step 7 (0.14). Step 7's
+// commit throws, naming the cell and h, with the wear at that p (the return
+// mapping is exact for linear hardening: a few operations rounded at eps,
+// 1e-12 relative); every step before leaves the wear below h.
+TEST(LinerContactSolve, WornThroughEndsTheRun) {
+  AbradableCellsGeometry thin = geometry();
+  thin.thickness = 0.1;
+  const AbradableCellsMaterial mat = material();
+  const double c = 1e-9;
+  LinerContactSolve solve(1, 1e-3, 0.0, AbradableCells(thin, mat), layout({1.0}));
+  solve.set_contact_matrix(Eigen::MatrixXd::Identity(3, 3) * c);
+  const int cell = solve.cells().sector(1.0);
+  const double a = solve.cells().area();
+  int thrown_at = 0;
+  for (int step = 1; step <= 20 && thrown_at == 0; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Zero(3);
+    predicted(0) = -0.02 * step;
+    StepReport report;
+    try {
+      solve.solve(predicted, step, report);
+      EXPECT_LT(solve.cells().state(cell).wear, thin.thickness) << "step " << step;
+    } catch (const ComponentIntegrationError& e) {
+      thrown_at = step;
+      const std::string what = e.what();
+      EXPECT_NE(what.find("worn through at sector " + std::to_string(cell) + ", row 0"),
+                std::string::npos)
+          << what;
+      EXPECT_NE(what.find("thickness 0.1"), std::string::npos) << what;
+      const double p = (0.02 * step - mat.yield * thin.thickness / mat.young - c * a * mat.yield) /
+                       (1.0 + mat.hardening / mat.young + c * a * mat.hardening / thin.thickness);
+      EXPECT_NEAR(solve.cells().state(cell).wear, p, 1e-12 * p);
+      ASSERT_EQ(e.advice().remedies.size(), 1u);
+      EXPECT_EQ(e.advice().remedies[0], Remedy::thicker_liner_or_larger_clearance);
+    }
+  }
+  EXPECT_EQ(thrown_at, 7);
 }
 
 } // namespace
