@@ -23,6 +23,19 @@
 namespace rsi {
 namespace {
 
+/// sweep.csv's status of a run that came back: "completed"; "worn_through"
+/// when a tip wore a liner cell to its thickness (the liner model ends
+/// there, the blade did not blow up: not counted as diverged); else
+/// "diverged" (a monitor stopped it).
+std::string run_status_word(const RunSummary& s) {
+  if (s.completed) return "completed";
+  const std::vector<Remedy>& remedies = s.status_advice.remedies;
+  if (std::find(remedies.begin(), remedies.end(), Remedy::thicker_liner_or_larger_clearance) !=
+      remedies.end())
+    return "worn_through";
+  return "diverged";
+}
+
 /// Lowest natural frequencies written a run (interaction_lines.csv).
 constexpr int blade_frequencies = 5;
 /// Engine orders of interaction_lines.csv: 1 .. this.
@@ -150,8 +163,8 @@ public:
       const double residual = result.summary.energy_scale > 0.0
                                   ? result.summary.energy_balance_error / result.summary.energy_scale
                                   : 0.0;
-      out.row = csv_row(speed, r.run, result.summary.completed ? "completed" : "diverged",
-                        indicators.finish(), residual);
+      out.row = csv_row(speed, r.run, run_status_word(result.summary), indicators.finish(),
+                        residual);
       if (liner()) {
         // The wear the run left (its whole window, the transient included).
         out.row.pop_back();

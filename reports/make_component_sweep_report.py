@@ -132,13 +132,19 @@ def main():
     panels = [("max_tip_radial", f"max |radial tip displacement| [{length_unit}]"),
               ("contact_fraction", "contact fraction (rows with a closed contact)"),
               ("max_contact_force", f"max normal contact force [{force_unit}]")]
-    if "max_wear_depth" in rows[0]:
+    liner = "max_wear_depth" in rows[0]
+    if liner:
         panels.append(("max_wear_depth", f"deepest wear of the liner [{length_unit}]"))
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3 * len(panels)), sharex=True)
     for ax, (key, label) in zip(axes, panels):
         for run in runs:
             x, y = series(run, key)
             ax.plot(x, y, ".-", ms=3, lw=0.8, label=run)
+            worn = [(abs(number(r["speed_rad_s"])), number(r[key])) for r in rows
+                    if r["run"] == run and r["status"] == "worn_through"]
+            if worn:
+                ax.plot([p[0] for p in worn], [p[1] for p in worn], "x", color="k", ms=5,
+                        label=f"{run}: liner worn through (run stopped)" if ax is axes[0] else None)
         for s, eo, k, f, casing, _ in shown:
             ax.axvline(s, color="C3" if casing else "0.6", ls="-" if casing else ":", lw=0.8)
         ax.set_ylabel(label)
@@ -207,16 +213,18 @@ def main():
           f"{summary.get('modal_ratio', '?')}. Spectrum: {summary.get('window', '?')}.",
           f"- Ranks {summary.get('ranks', '?')}, jobs {summary.get('jobs', '?')}; wall time of the "
           f"whole sweep {summary.get('wall_s', math.nan):.1f} s.", ""]
-    md += ["| run | natural frequencies, tip free [Hz] | basis s | wall s per speed (median) | completed | diverged | failed |",
-           "|---|---|---|---|---|---|---|"]
+    # A liner's runs may also stop worn through (a cell's wear reached its thickness).
+    statuses = ["completed", "diverged", "failed"] + (["worn_through"] if liner else [])
+    md += ["| run | natural frequencies, tip free [Hz] | basis s | wall s per speed (median) | " +
+           " | ".join(st.replace("_", " ") for st in statuses) + " |",
+           "|---|---|---|---|" + "---|" * len(statuses)]
     for run_summary in summary.get("runs", []):
         name = run_summary.get("name", "?")
-        count = {s: sum(1 for r in rows if r["run"] == name and r["status"] == s)
-                 for s in ("completed", "diverged", "failed")}
+        count = {s: sum(1 for r in rows if r["run"] == name and r["status"] == s) for s in statuses}
         freqs = ", ".join(f"{f:.1f}" for f in run_summary.get("natural_frequencies_hz", []))
         md.append(f"| {name} | {freqs} | {run_summary.get('basis_s', math.nan):.3g} | "
-                  f"{run_summary.get('wall_s_per_speed_median', math.nan):.3g} | {count['completed']} | "
-                  f"{count['diverged']} | {count['failed']} |")
+                  f"{run_summary.get('wall_s_per_speed_median', math.nan):.3g} | " +
+                  " | ".join(str(count[st]) for st in statuses) + " |")
     md += ["", "## Interaction map", "", "![interaction map](sweep_map.png)", "",
            "Vertical lines: the speeds 2 pi f_k / EO in the range (red solid: the oval casing's "
            "orders EO = 2, 4, ...; grey dotted: odd orders).", ""]
@@ -244,12 +252,19 @@ def main():
                          f"{' (at that speed)' if campbell else ''}, whose EO {order} line crosses "
                          f"at {where}" if order >= 1 else "")
         md.append(f"- {run}: the largest radial tip displacement, {y[i]:.4g}, is at {x[i]:g} rad/s{note}.")
-        if "max_wear_depth" in rows[0]:
+        if liner:
             xw, w = series(run, "max_wear_depth")
             j = max(range(len(w)), key=lambda m: (w[m] if not math.isnan(w[m]) else -1))
             lobes = [r["wear_lobes"] for r in rows if r["run"] == run and r["status"] != "failed"]
             md.append(f"- {run}: the deepest wear, {w[j]:.4g}, is at {xw[j]:g} rad/s "
                       f"({lobes[j]} lobes there); liner: {summary.get('liner', {})}.")
+            worn = [abs(number(r["speed_rad_s"])) for r in rows
+                    if r["run"] == run and r["status"] == "worn_through"]
+            if worn:
+                md.append(f"- {run}: the liner wore through (a cell's wear reached its thickness; "
+                          f"the run stopped there, its indicators up to that step, marked x on "
+                          f"the map) at {len(worn)} speeds: " + ", ".join(f"{w:g}" for w in worn) +
+                          " rad/s.")
     md += ["", "## Campbell diagram", "", "![Campbell diagram](sweep_campbell.png)", ""]
     failures = summary.get("failures", [])
     if failures:

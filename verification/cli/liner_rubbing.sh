@@ -49,6 +49,10 @@
 #     backing to meet), exit 3, summary not completed, its status naming the
 #     liner worn through and its thickness. Measured: full, cb 20, macneal 20
 #     all stop at sector 38 at t = 8.41e-4 s (wear 0.02006, 0.02021, 0.02098).
+#     `rsi sweep` of the same MacNeal-20 run at the case's speed exits 0 (a
+#     map goes on past a worn-through speed) with the row's status
+#     `worn_through`, diverged 0, and the wear of `rsi simulate`'s run (the
+#     same run: equal to the last digit).
 # The reduced runs' wear against the full run's is liner_campaign's
 # (data/thresholds/blade3d-rubbing-liner.json).
 # Skipped (exit 77) without gmsh or ccx. About 20 s in Release.
@@ -86,7 +90,8 @@ variant "$work/pressed.json" "rubbing.revolutions=0.1" "rubbing.campaign.full_re
 variant "$work/soft.json" "rubbing.revolutions=$length" "rubbing.campaign.full_revolutions=$length" \
   'rubbing.liner={"thickness": 2.0, "young_modulus": 10000.0, "yield_stress": 10.0, "hardening_modulus": 1000.0, "cells_around": 200}'
 variant "$work/thin.json" "rubbing.revolutions=$length" "rubbing.campaign.full_revolutions=$length" \
-  'rubbing.liner={"thickness": 0.02, "young_modulus": 10000.0, "yield_stress": 0.01, "hardening_modulus": 0.0, "cells_around": 200}'
+  'rubbing.liner={"thickness": 0.02, "young_modulus": 10000.0, "yield_stress": 0.01, "hardening_modulus": 0.0, "cells_around": 200}' \
+  "sweep={\"speeds\": [1344.0], \"revolutions\": $length, \"transient_revolutions\": 0.1, \"runs\": [{\"method\": \"macneal\", \"modes\": [20]}]}"
 for method in $methods; do
   modes=()
   [ "$method" = full ] || modes=(--modes 20)
@@ -105,6 +110,11 @@ for method in $methods; do
     exit 1
   fi
 done
+if ! "$rsi" sweep "$work/thin.json" --no-report --quiet --ccx-cache "$cache" --out "$work/sweep-thin" \
+    >"$work/sweep-thin.log" 2>&1; then
+  echo "FAIL: the sweep on a liner worn through did not exit 0: $(tail -n 3 "$work/sweep-thin.log")"
+  exit 1
+fi
 /usr/bin/python3 - "$work" "$sanitized" "$methods" <<'PY'
 import csv, json, sys
 work = sys.argv[1]
@@ -201,5 +211,11 @@ for m in methods:
     st = json.load(open(f"{work}/{m}-thin/summary.json"))
     check(not st["completed"] and "worn through" in st["status"] and "thickness 0.02" in st["status"],
           "%s liner of 0.02 mm: stopped, %s" % (m, st["status"][:160]))
+row = list(csv.DictReader(open(f"{work}/sweep-thin/sweep.csv")))
+st = json.load(open(f"{work}/macneal-thin/summary.json"))
+check(len(row) == 1 and row[0]["status"] == "worn_through" and row[0]["diverged"] == "0" and
+      float(row[0]["max_wear_depth"]) == st["liner"]["max_wear_depth"],
+      "sweep, liner of 0.02 mm: status %s, diverged %s, deepest wear %s (rsi simulate's %.17g)"
+      % (row[0]["status"], row[0]["diverged"], row[0]["max_wear_depth"], st["liner"]["max_wear_depth"]) if row else "sweep: no row")
 sys.exit(1 if failures else 0)
 PY
