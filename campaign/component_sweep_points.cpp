@@ -394,7 +394,8 @@ std::vector<double> sweep_rotation_fit_speeds(const ComponentCase& c, const Comp
 
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
                                                     const std::string& where,
-                                                    std::shared_ptr<const RotationFit> rotation) {
+                                                    std::shared_ptr<const RotationFit> rotation,
+                                                    int threads) {
   if (model.component_case().rotation_effects && !rotation)
     throw std::logic_error("component_sweep_points: rotation effects need the rotation fit");
   std::vector<PreparedRun> runs(sweep.runs.size());
@@ -410,7 +411,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
       basis_speeds.insert(basis_speeds.end(), rotation->fit_speeds.begin(), rotation->fit_speeds.end());
       try {
         r.subspace = std::make_shared<const SpeedSubspace>(
-            speed_subspace(*rotation, r.run.method, r.run.modes, basis_speeds));
+            speed_subspace(*rotation, r.run.method, r.run.modes, basis_speeds, threads));
       } catch (const ReductionError& e) {
         throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
       }

@@ -35,10 +35,12 @@ namespace rsi {
 /// interaction_lines.csv then holds the crossings of the engine orders with
 /// the rotating blade's lowest frequencies (campbell_crossings.hpp, the
 /// full model's on a grid of speeds, written to campbell.csv), each at its
-/// crossing speed, for every run.
+/// crossing speed, for every run. `threads`: the threads a run's speed
+/// subspace builds its bases on (the rows do not depend on it).
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,
                                                     const std::string& where,
-                                                    std::shared_ptr<const RotationFit> rotation = {});
+                                                    std::shared_ptr<const RotationFit> rotation = {},
+                                                    int threads = 1);
 
 /// The fit speeds of a sweep with rotation effects: sweep.rotation_fit_speeds,
 /// or 0.1, 0.2, 0.4, 0.6, 0.8, 1 times its largest |Omega| or

@@ -133,6 +133,7 @@ def main():
               ("contact_fraction", "contact fraction (rows with a closed contact)"),
               ("max_contact_force", f"max normal contact force [{force_unit}]")]
     liner = "max_wear_depth" in rows[0]
+    worn_speeds = sorted({abs(number(r["speed_rad_s"])) for r in rows if r["status"] == "worn_through"})
     if liner:
         panels.append(("max_wear_depth", f"deepest wear of the liner [{length_unit}]"))
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3 * len(panels)), sharex=True)
@@ -140,11 +141,12 @@ def main():
         for run in runs:
             x, y = series(run, key)
             ax.plot(x, y, ".-", ms=3, lw=0.8, label=run)
-            worn = [(abs(number(r["speed_rad_s"])), number(r[key])) for r in rows
-                    if r["run"] == run and r["status"] == "worn_through"]
-            if worn:
-                ax.plot([p[0] for p in worn], [p[1] for p in worn], "x", color="k", ms=5,
-                        label=f"{run}: liner worn through (run stopped)" if ax is axes[0] else None)
+        # A worn-through run stopped early (often before the transient: no
+        # indicators): a grey band over its speed on every panel.
+        step = min((b - a for a, b in zip(speeds, speeds[1:])), default=1.0)
+        for i, s in enumerate(worn_speeds):
+            ax.axvspan(s - step / 2, s + step / 2, color="0.8", lw=0,
+                       label="liner worn through (run stopped)" if i == 0 and ax is axes[0] else None)
         for s, eo, k, f, casing, _ in shown:
             ax.axvline(s, color="C3" if casing else "0.6", ls="-" if casing else ":", lw=0.8)
         ax.set_ylabel(label)
@@ -262,7 +264,7 @@ def main():
                     if r["run"] == run and r["status"] == "worn_through"]
             if worn:
                 md.append(f"- {run}: the liner wore through (a cell's wear reached its thickness; "
-                          f"the run stopped there, its indicators up to that step, marked x on "
+                          f"the run stopped there, its indicators up to that step, grey bands on "
                           f"the map) at {len(worn)} speeds: " + ", ".join(f"{w:g}" for w in worn) +
                           " rad/s.")
     md += ["", "## Campbell diagram", "", "![Campbell diagram](sweep_campbell.png)", ""]

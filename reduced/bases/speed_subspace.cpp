@@ -1,9 +1,14 @@
 #include "speed_subspace.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <optional>
 #include <stdexcept>
+#include <system_error>
+#include <thread>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -32,10 +37,54 @@ Eigen::MatrixXd projected(const Eigen::SparseMatrix<double>& a, const Eigen::Mat
   return 0.5 * (p + p.transpose()); // symmetric to the rounding of the products
 }
 
+/// The method's basis at each speed, in the speeds' order, built on up to
+/// `threads` threads taking speeds in turn. Each basis is one reduce() on
+/// its own K(Omega) (its own CHOLMOD factor and workspace), so a basis has
+/// the same bits whichever thread builds it. An exception of a build is
+/// rethrown once every thread has joined, the lowest speed index's first.
+std::vector<ReducedBasis> bases_at_speeds(const RotationFit& fit, const std::string& method,
+                                          int modes, const std::vector<double>& speeds,
+                                          int threads) {
+  const std::vector<int>& boundary = fit.rest.boundary;
+  const size_t n = speeds.size();
+  std::vector<std::optional<ReducedBasis>> built(n);
+  std::vector<std::exception_ptr> errors(n);
+  std::atomic<size_t> next{0};
+  std::atomic<bool> failed{false};
+  const auto worker = [&]() noexcept {
+    for (size_t i = next++; i < n && !failed; i = next++) {
+      try {
+        const RotatingComponent at = rotating_component_at(fit, speeds[i]);
+        built[i] = reduce(at.component.stiffness, at.component.mass, boundary, method, modes);
+      } catch (...) {
+        errors[i] = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> started;
+  const size_t wanted = std::min(n, static_cast<size_t>(std::max(threads, 1)));
+  try {
+    for (size_t t = 1; t < wanted; ++t)
+      started.emplace_back(worker);
+  } catch (const std::system_error&) { // a thread not started: the others share its speeds
+  }
+  worker();
+  for (std::thread& t : started)
+    t.join();
+  std::vector<ReducedBasis> bases;
+  for (size_t i = 0; i < n; ++i) {
+    if (errors[i]) std::rethrow_exception(errors[i]);
+    if (!built[i]) throw std::logic_error("speed_subspace: a basis speed was not built");
+    bases.push_back(std::move(*built[i]));
+  }
+  return bases;
+}
+
 } // namespace
 
 SpeedSubspace speed_subspace(const RotationFit& fit, const std::string& method, int modes,
-                             const std::vector<double>& basis_speeds) {
+                             const std::vector<double>& basis_speeds, int threads) {
   const Clock::time_point start = Clock::now();
   if (basis_speeds.empty())
     throw std::invalid_argument("speed_subspace: no basis speed");
@@ -47,11 +96,10 @@ SpeedSubspace speed_subspace(const RotationFit& fit, const std::string& method, 
   s.modes = modes;
   s.basis_speeds = basis_speeds;
   s.n_boundary = nb;
+  const std::vector<ReducedBasis> bases = bases_at_speeds(fit, method, modes, basis_speeds, threads);
   Eigen::MatrixXd psi;                 // Psi_0, n x n_B
   std::vector<Eigen::MatrixXd> others; // every column, its boundary part removed
-  for (double speed : basis_speeds) {
-    const RotatingComponent at = rotating_component_at(fit, speed);
-    const ReducedBasis b = reduce(at.component.stiffness, at.component.mass, boundary, method, modes);
+  for (const ReducedBasis& b : bases) {
     const Eigen::MatrixXd& t = b.transformation;
     if (psi.size() == 0) {
       psi.resize(n, nb);

@@ -46,9 +46,12 @@ struct SpeedSubspace {
 
 /// Builds the subspace from the method's bases at `basis_speeds` (each at
 /// most the fit's highest speed) on `fit`'s K(Omega) and mass, boundary =
-/// the fit's component's boundary dofs. Throws ReductionError as reduce().
+/// the fit's component's boundary dofs. The bases are built on up to
+/// `threads` threads (one basis a thread at a time, so two builds of a
+/// 61,098-dof Rotor 37 model hold two factorisations at once); the result
+/// does not depend on `threads`. Throws ReductionError as reduce().
 SpeedSubspace speed_subspace(const RotationFit& fit, const std::string& method, int modes,
-                             const std::vector<double>& basis_speeds);
+                             const std::vector<double>& basis_speeds, int threads = 1);
 
 /// T_g^T K(speed) T_g (r_g x r_g) by the fit's features at `speed`.
 Eigen::MatrixXd subspace_stiffness(const SpeedSubspace& subspace, const RotationFit& fit,

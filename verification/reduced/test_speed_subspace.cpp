@@ -18,6 +18,9 @@
 //    the full K(Omega): its CB pencil's eigenvalues are upper bounds of the
 //    full model's (Rayleigh-Ritz), as are the direct CB's; both printed
 //    with their distance to the full model's.
+// 3. The bases built on two threads give the same subspace, bit for bit
+//    (each basis is one reduce() on its own K(Omega); only who builds it
+//    changes): the sweep's rows must not depend on --jobs.
 //
 // Skipped (GTEST_SKIP, reason printed) when ccx or gmsh is not on PATH.
 
@@ -25,6 +28,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -120,6 +124,21 @@ TEST_F(SpeedSubspaceBlade, BetweenBasisSpeedsARitzModel) {
     EXPECT_GT(ls(i), exact * (1.0 - 1e-10));
     EXPECT_GT(ld(i), exact * (1.0 - 1e-10));
   }
+}
+
+TEST_F(SpeedSubspaceBlade, TwoThreadsBuildTheSameSubspace) {
+  const std::vector<double> speeds = {0.0, 1000.0, 2000.0};
+  const rsi::SpeedSubspace one = rsi::speed_subspace(fit, "macneal", 10, speeds, 1);
+  const rsi::SpeedSubspace two = rsi::speed_subspace(fit, "macneal", 10, speeds, 2);
+  std::printf("MacNeal-10 subspace, 3 basis speeds: %.2f s on one thread, %.2f s on two\n",
+              one.build_seconds, two.build_seconds);
+  ASSERT_EQ(one.n_subspace(), two.n_subspace());
+  EXPECT_TRUE((one.transformation.array() == two.transformation.array()).all());
+  EXPECT_TRUE((one.rest_stiffness.array() == two.rest_stiffness.array()).all());
+  EXPECT_TRUE((one.mass.array() == two.mass.array()).all());
+  ASSERT_EQ(one.terms.size(), two.terms.size());
+  for (size_t q = 0; q < one.terms.size(); ++q)
+    EXPECT_TRUE((one.terms[q].array() == two.terms[q].array()).all()) << "term " << q;
 }
 
 } // namespace

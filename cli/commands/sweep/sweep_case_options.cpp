@@ -65,7 +65,7 @@ std::unique_ptr<SweepPoints> case_sweep(const Case& given, const SweepOptions& o
 }
 
 std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptions& options,
-                                        int /*jobs*/) {
+                                        int jobs) {
   for (const std::string& name : options.paper_run_options)
     throw UsageError(name + ": only for the paper's case (a component's runs step at "
                             "rubbing.step_safety of their own limit, on the whole casing); drop it");
@@ -112,7 +112,8 @@ std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptio
   if (c.rotation_effects)
     rotation = std::make_shared<const RotationFit>(
         fit_rotation(c, options.load, sweep_rotation_fit_speeds(c, sweep), 2));
-  return component_sweep_points(std::move(model), std::move(sweep), where, std::move(rotation));
+  return component_sweep_points(std::move(model), std::move(sweep), where, std::move(rotation),
+                                jobs);
 }
 
 } // namespace rsi
