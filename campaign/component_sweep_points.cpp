@@ -93,7 +93,14 @@ public:
   ComponentSweepPoints(RubbingModel model, ComponentSweep sweep, std::vector<PreparedRun> runs,
                        std::shared_ptr<const RotationFit> rotation)
       : m_model(std::move(model)), m_sweep(std::move(sweep)), m_runs(std::move(runs)),
-        m_rotation(std::move(rotation)) {}
+        m_rotation(std::move(rotation)) {
+    if (m_rotation) {
+      m_frame = m_model;
+      Component& component = m_frame->problem.structures.front();
+      component.stiffness = Eigen::SparseMatrix<double>();
+      component.mass = Eigen::SparseMatrix<double>();
+    }
+  }
 
   const std::vector<double>& speeds() const override { return m_sweep.speeds; }
   int n_runs() const override { return static_cast<int>(m_runs.size()); }
@@ -128,7 +135,7 @@ public:
     // tip displacement is then measured from the static deflected tip
     // (the casing law's g0_c(t) - growth_c).
     std::optional<RubbingModel> spinning;
-    if (m_rotation) spinning = model_at(speed);
+    if (m_rotation) spinning = model_at(speed, r.run.method == "full");
     const RubbingModel& model = spinning ? *spinning : m_model;
     std::vector<RigidSurfaceNode> nodes = rigid_surface_nodes(model.component(), model.contact_nodes());
     for (size_t k = 0; k < model.problem.casing.tip_growth.size(); ++k)
@@ -289,12 +296,25 @@ private:
 
   /// The model at `speed` by the rotation fit: K(Omega), the mass at rest,
   /// each contact node's static growth in the gap.
-  RubbingModel model_at(double speed) const {
-    RubbingModel at = m_model;
-    RotatingComponent rotating = rotating_component_at(*m_rotation, speed);
+  /// The model at `speed`: its tip growth and, with `matrices` (the full
+  /// run), K(Omega) and M. A reduced run's basis comes from the subspace and
+  /// the run reads only the model's geometry, dofs and contact set-up, so it
+  /// gets the frame without K and M: building K(Omega) and copying the
+  /// model at every speed was 40 % of the Rotor 37 rotating map's run phase
+  /// (perf, session 22).
+  RubbingModel model_at(double speed, bool matrices) const {
+    RubbingModel at = *m_frame;
     Component& component = at.problem.structures.front();
-    component.stiffness = std::move(rotating.component.stiffness);
-    component.mass = std::move(rotating.component.mass);
+    RotatingComponent rotating;
+    if (matrices) {
+      rotating = rotating_component_at(*m_rotation, speed);
+      component.stiffness = std::move(rotating.component.stiffness);
+      component.mass = std::move(rotating.component.mass);
+    } else {
+      // rotating_component_at's deflection, without its K(Omega).
+      rotating.deflection = speed == 0.0 ? Eigen::VectorXd::Zero(component.n_dofs())
+                                         : rotation_fit_deflection(*m_rotation, speed);
+    }
     at.problem.contact.rotation_speed = speed;
     // The gap is the clearance at rubbing.clearance_speed: the growth from there.
     const double clearance_speed = m_model.setup().clearance_speed;
@@ -371,6 +391,8 @@ private:
   ComponentSweep m_sweep;
   std::vector<PreparedRun> m_runs;
   std::shared_ptr<const RotationFit> m_rotation; ///< null: the blade at rest at every speed
+  /// With rotation effects: m_model without K and M (model_at's start).
+  std::optional<RubbingModel> m_frame;
 };
 
 } // namespace
