@@ -294,10 +294,9 @@ private:
     return row + "\n";
   }
 
-  /// The model at `speed` by the rotation fit: K(Omega), the mass at rest,
-  /// each contact node's static growth in the gap.
-  /// The model at `speed`: its tip growth and, with `matrices` (the full
-  /// run), K(Omega) and M. A reduced run's basis comes from the subspace and
+  /// The model at `speed` by the rotation fit: each contact node's static
+  /// growth in the gap and, with `matrices` (the full run), K(Omega) and
+  /// the mass at rest. A reduced run's basis comes from the subspace and
   /// the run reads only the model's geometry, dofs and contact set-up, so it
   /// gets the frame without K and M: building K(Omega) and copying the
   /// model at every speed was 40 % of the Rotor 37 rotating map's run phase

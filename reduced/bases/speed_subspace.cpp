@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -65,9 +66,11 @@ std::vector<ReducedBasis> bases_at_speeds(const RotationFit& fit, const std::str
   std::vector<std::thread> started;
   const size_t wanted = std::min(n, static_cast<size_t>(std::max(threads, 1)));
   try {
+    started.reserve(wanted);
     for (size_t t = 1; t < wanted; ++t)
       started.emplace_back(worker);
   } catch (const std::system_error&) { // a thread not started: the others share its speeds
+  } catch (const std::bad_alloc&) {    // no memory for its state: the same
   }
   worker();
   for (std::thread& t : started)
