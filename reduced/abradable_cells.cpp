@@ -68,23 +68,6 @@ int AbradableCells::row(double z) const {
   return j >= m_geometry.n_axial ? m_geometry.n_axial - 1 : j;
 }
 
-BarResponse AbradableCells::bar(const BarState& state, double delta) const {
-  BarResponse r;
-  r.state = state;
-  if (!(delta > 0.0)) return r;
-  const double trial = m_k * delta;
-  if (trial <= state.yield_force) {
-    r.force = trial;
-    return r;
-  }
-  const double dp = (trial - state.yield_force) / (m_k + m_kh);
-  r.force = m_k * (delta - dp);
-  r.state.wear = state.wear + dp;
-  r.state.yield_force = state.yield_force + m_kh * dp;
-  r.plastic_work = dp * (state.yield_force + 0.5 * m_kh * dp);
-  return r;
-}
-
 BarResponse AbradableCells::compliant(const BarState& state, double delta_pred,
                                       double compliance) const {
   BarResponse r;

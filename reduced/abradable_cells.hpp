@@ -92,8 +92,33 @@ public:
   /// std::invalid_argument otherwise.
   int row(double z) const;
 
-  /// The bar law at indentation delta from `state` (header).
-  BarResponse bar(const BarState& state, double delta) const;
+  /// The bar law at indentation delta from `state` (header). Inline: the
+  /// tip patch evaluates it for every bar of a patch at every sweep.
+  BarResponse bar(const BarState& state, double delta) const {
+    BarResponse r;
+    r.state = state;
+    if (!(delta > 0.0)) return r;
+    const double trial = m_k * delta;
+    if (trial <= state.yield_force) {
+      r.force = trial;
+      return r;
+    }
+    const double dp = (trial - state.yield_force) / (m_k + m_kh);
+    r.force = m_k * (delta - dp);
+    r.state.wear = state.wear + dp;
+    r.state.yield_force = state.yield_force + m_kh * dp;
+    r.plastic_work = dp * (state.yield_force + 0.5 * m_kh * dp);
+    return r;
+  }
+  /// bar(state, delta).force, the same operations (so the same bits)
+  /// without the state and plastic work: the tip patch's root search
+  /// evaluates it for every bar of the patch at each probe.
+  double bar_force(const BarState& state, double delta) const {
+    if (!(delta > 0.0)) return 0.0;
+    const double trial = m_k * delta;
+    if (trial <= state.yield_force) return trial;
+    return m_k * (delta - (trial - state.yield_force) / (m_k + m_kh));
+  }
   /// The root of F = bar(state, delta~ - c F).force, c >= 0 (header), with
   /// the state and plastic work of the bar at delta~ - c F, in closed form.
   BarResponse compliant(const BarState& state, double delta_pred, double compliance) const;

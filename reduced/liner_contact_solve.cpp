@@ -126,6 +126,7 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
     m_patch_cells.assign(m_nc, {});
     m_previous.assign(m_nc, {});
     m_patch_response.assign(m_nc, {});
+    m_patch_solve.assign(m_nc, PatchCompliantSolve{});
     m_last.assign(static_cast<size_t>(m_cells.n_cells()), PatchLink{});
   }
 }
@@ -188,7 +189,7 @@ double LinerContactSolve::patch_solve(int c, double depth_pred, double complianc
   const int n = static_cast<int>(m_patch_cells[c].size());
   m_from.resize(n);
   for (int i = 0; i < n; ++i) m_from[i] = patch_start_state(c, i);
-  return patch_compliant(m_cells, m_from, depth_pred, compliance, m_patch_response[c]);
+  return m_patch_solve[c](m_cells, m_from, depth_pred, compliance, m_patch_response[c]);
 }
 
 void LinerContactSolve::add_contact_work(const Eigen::VectorXd& lambda_n,

@@ -202,6 +202,7 @@ private:
   std::vector<std::vector<BarResponse>> m_patch_response; ///< per contact and patch cell
   std::vector<PatchLink> m_last;                          ///< per cell, scratch of place_patches
   std::vector<BarState> m_from;                           ///< scratch of patch_solve
+  std::vector<PatchCompliantSolve> m_patch_solve;         ///< per contact
   double m_contact_work = 0.0, m_normal_work = 0.0, m_elastic_energy = 0.0;
   double m_max_law_residual = 0.0;
   long m_sweeps = 0;

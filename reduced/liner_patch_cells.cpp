@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -87,34 +88,52 @@ std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z
 
 double patch_compliant(const AbradableCells& cells, const std::vector<BarState>& from,
                        double depth_pred, double compliance, std::vector<BarResponse>& bars) {
+  PatchCompliantSolve solve;
+  return solve(cells, from, depth_pred, compliance, bars);
+}
+
+double PatchCompliantSolve::operator()(const AbradableCells& cells,
+                                       const std::vector<BarState>& from, double depth_pred,
+                                       double compliance, std::vector<BarResponse>& bars) {
   const size_t n = from.size();
   if (n == 0) refuse("a patch over no cell");
   if (!(compliance >= 0.0)) refuse("compliance = " + message_number(compliance) + ", allowed >= 0");
   const double k = cells.stiffness(), kh = cells.hardening_stiffness();
   const auto yield_depth = [k](const BarState& s) { return s.wear + s.yield_force / k; };
-  // The breakpoints of G (header), and the piece holding the root: it starts
-  // at the largest b with c G(b) <= d~ - b, G(b) from wear differences only.
-  std::vector<double> breaks;
-  breaks.reserve(2 * n);
-  for (const BarState& s : from) {
-    breaks.push_back(s.wear);
-    breaks.push_back(yield_depth(s));
-  }
-  std::sort(breaks.begin(), breaks.end());
-  const auto at_or_past = [&](double b) {
-    double g = 0.0;
-    for (const BarState& s : from)
-      g += cells.bar(s, b - s.wear).force;
-    return compliance * g <= depth_pred - b;
+  const auto same = [](const BarState& a, const BarState& b) {
+    return a.wear == b.wear && a.yield_force == b.yield_force;
   };
-  long lo = -1, hi = static_cast<long>(breaks.size());
+  if (!std::equal(from.begin(), from.end(), m_from.begin(), m_from.end(), same)) {
+    // The breakpoints of G (header), sorted.
+    m_from = from;
+    m_breaks.clear();
+    for (const BarState& s : from) {
+      m_breaks.push_back(s.wear);
+      m_breaks.push_back(yield_depth(s));
+    }
+    std::sort(m_breaks.begin(), m_breaks.end());
+    m_g.assign(m_breaks.size(), std::numeric_limits<double>::quiet_NaN());
+  }
+  // The piece holding the root starts at the largest b with
+  // c G(b) <= d~ - b, G(b) from wear differences only (no d~).
+  const auto at_or_past = [&](size_t j) {
+    if (std::isnan(m_g[j])) {
+      const double b = m_breaks[j];
+      double g = 0.0;
+      for (const BarState& s : from)
+        g += cells.bar_force(s, b - s.wear);
+      m_g[j] = g;
+    }
+    return compliance * m_g[j] <= depth_pred - m_breaks[j];
+  };
+  long lo = -1, hi = static_cast<long>(m_breaks.size());
   while (hi - lo > 1) {
     const long mid = lo + (hi - lo) / 2;
-    (at_or_past(breaks[static_cast<size_t>(mid)]) ? lo : hi) = mid;
+    (at_or_past(static_cast<size_t>(mid)) ? lo : hi) = mid;
   }
   double force = 0.0;
   if (lo >= 0) {
-    const double start = breaks[static_cast<size_t>(lo)];
+    const double start = m_breaks[static_cast<size_t>(lo)];
     double n_elastic = 0.0, n_plastic = 0.0, sum_elastic = 0.0, sum_plastic = 0.0;
     for (const BarState& s : from) {
       if (!(s.wear <= start)) continue; // not touching on this piece

@@ -82,4 +82,21 @@ std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z
 double patch_compliant(const AbradableCells& cells, const std::vector<BarState>& from,
                        double depth_pred, double compliance, std::vector<BarResponse>& bars);
 
+/// patch_compliant for one patch solved again and again (the sweeps of a
+/// Gauss-Seidel step, d~ changing, the bars' states mostly not): the
+/// sorted breakpoints and each G(b) the root search has evaluated are kept
+/// while `from` stays the same bit for bit, so a repeated solve costs the
+/// binary search's comparisons. G(b) is the same sum in the same order as
+/// patch_compliant's, so every call returns patch_compliant's bits.
+class PatchCompliantSolve {
+public:
+  double operator()(const AbradableCells& cells, const std::vector<BarState>& from,
+                    double depth_pred, double compliance, std::vector<BarResponse>& bars);
+
+private:
+  std::vector<BarState> m_from; ///< the states the breakpoints belong to
+  std::vector<double> m_breaks; ///< sorted
+  std::vector<double> m_g;      ///< G(m_breaks[j]), NaN until evaluated
+};
+
 } // namespace rsi

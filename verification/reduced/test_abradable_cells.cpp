@@ -284,6 +284,53 @@ TEST(LinerPatchCells, JointRootAgainstBisection) {
   EXPECT_GT(plastic, 0);
 }
 
+// PatchCompliantSolve keeps the breakpoints and the G(b) it evaluated while
+// the bars' states stay the same (liner_patch_cells.hpp): called again and
+// again, as the Gauss-Seidel sweeps do, with the depth changing and the
+// states changing now and then (one bar worn further, a bar more, the first
+// states back), it must return patch_compliant's force and bars bit for
+// bit. A memory kept across a change of state would put the root on the
+// old G's piece. bar_force is bar().force bit for bit (the same operations).
+TEST(LinerPatchCells, RepeatedSolveIsTheOneShotSolve) {
+  AbradableCells cells(geometry(), material());
+  const double k = cells.stiffness(), kh = cells.hardening_stiffness();
+  const double fy0 = 10.0 * cells.area(), dy = fy0 / k;
+  std::vector<BarState> a;
+  for (double p : {0.0, 0.3, 1.0, 2.5, 6.0}) a.push_back(BarState{p * dy, fy0 + kh * p * dy});
+  std::vector<BarState> b = a;
+  b[1] = BarState{4.0 * dy, fy0 + kh * 4.0 * dy}; // worn further: G changes
+  std::vector<BarState> c3 = b;
+  c3.push_back(BarState{0.5 * dy, fy0 + kh * 0.5 * dy}); // a bar more
+  const std::vector<const std::vector<BarState>*> sequence = {&a, &a, &b, &b, &c3, &a};
+  PatchCompliantSolve solve;
+  int calls = 0, forces = 0;
+  for (const std::vector<BarState>* from : sequence)
+    for (double ck : {0.0, 1.0, 1e3})
+      for (int s = 0; s <= 40; ++s) {
+        const double depth = -dy + 12.0 * dy * s / 40 * (1.0 + ck);
+        const double c = ck / k;
+        std::vector<BarResponse> once, again;
+        const double f1 = patch_compliant(cells, *from, depth, c, once);
+        const double f2 = solve(cells, *from, depth, c, again);
+        ASSERT_EQ(f1, f2) << "call " << calls;
+        ASSERT_EQ(once.size(), again.size());
+        for (size_t i = 0; i < once.size(); ++i) {
+          EXPECT_EQ(once[i].force, again[i].force);
+          EXPECT_EQ(once[i].state.wear, again[i].state.wear);
+          EXPECT_EQ(once[i].state.yield_force, again[i].state.yield_force);
+          EXPECT_EQ(once[i].plastic_work, again[i].plastic_work);
+        }
+        ++calls;
+        forces += f1 > 0.0;
+      }
+  EXPECT_GT(forces, calls / 2); // most depths press the patch
+  for (const BarState& st : c3)
+    for (int s = -10; s <= 100; ++s) {
+      const double delta = 0.1 * s * dy;
+      EXPECT_EQ(cells.bar_force(st, delta), cells.bar(st, delta).force) << delta;
+    }
+}
+
 // One bar: patch_compliant's closed forms are AbradableCells::compliant's
 // term for term (liner_patch_cells.hpp), so the force is the same bit for
 // bit where both put the root on the same piece; near the yield breakpoint
