@@ -325,8 +325,8 @@ private:
     return at;
   }
 
-  /// campbell.csv (the full model's lowest frequencies on a grid over the
-  /// sweep's speeds) and interaction_lines.csv (each engine order's
+  /// campbell.csv (campbell_subspace()'s lowest frequencies on a grid over
+  /// the sweep's speeds) and interaction_lines.csv (each engine order's
   /// crossings with them, at the crossing speed, the same for every run).
   std::vector<std::pair<std::string, std::string>> rotating_side_files() const {
     std::vector<double> grid;

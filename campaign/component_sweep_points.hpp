@@ -31,10 +31,12 @@ namespace rsi {
 ///
 /// With rotation effects (`rotation`, fitted over the sweep's speeds) each
 /// speed's run uses K(Omega), the mass at rest and the tip growth of the
-/// parametric model (rotation_fit.hpp), and builds its basis at that speed;
+/// parametric model (rotation_fit.hpp); a reduced run reduces inside one
+/// speed subspace (speed_subspace.hpp), a full run builds K(Omega).
 /// interaction_lines.csv then holds the crossings of the engine orders with
-/// the rotating blade's lowest frequencies (campbell_crossings.hpp, the
-/// full model's on a grid of speeds, written to campbell.csv), each at its
+/// the rotating blade's lowest frequencies (campbell_crossings.hpp; on a
+/// grid of speeds, written to campbell.csv: the first reduced run's
+/// subspace model's, else the full parametric model's), each at its
 /// crossing speed, for every run. `threads`: the threads a run's speed
 /// subspace builds its bases on (the rows do not depend on it).
 std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, ComponentSweep sweep,

@@ -4,18 +4,15 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <new>
 #include <optional>
 #include <stdexcept>
-#include <system_error>
-#include <thread>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SparseCore>
 
 #include "reduction.hpp"
+#include "worker_threads.hpp"
 
 namespace rsi {
 namespace {
@@ -39,45 +36,28 @@ Eigen::MatrixXd projected(const Eigen::SparseMatrix<double>& a, const Eigen::Mat
 }
 
 /// The method's basis at each speed, in the speeds' order, built on up to
-/// `threads` threads taking speeds in turn. Each basis is one reduce() on
-/// its own K(Omega) (its own CHOLMOD factor and workspace), so a basis has
-/// the same bits whichever thread builds it. An exception of a build is
-/// rethrown once every thread has joined, the lowest speed index's first.
+/// `threads` threads taking speeds in turn (run_on_threads). Each basis is
+/// one reduce() on its own K(Omega) (its own CHOLMOD factor and workspace),
+/// so a basis has the same bits whichever thread builds it. The first
+/// exception of a build is rethrown once every thread has joined.
 std::vector<ReducedBasis> bases_at_speeds(const RotationFit& fit, const std::string& method,
                                           int modes, const std::vector<double>& speeds,
                                           int threads) {
   const std::vector<int>& boundary = fit.rest.boundary;
   const size_t n = speeds.size();
   std::vector<std::optional<ReducedBasis>> built(n);
-  std::vector<std::exception_ptr> errors(n);
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
-  const auto worker = [&]() noexcept {
+  const auto worker = [&]() {
     for (size_t i = next++; i < n && !failed; i = next++) {
-      try {
-        const RotatingComponent at = rotating_component_at(fit, speeds[i]);
-        built[i] = reduce(at.component.stiffness, at.component.mass, boundary, method, modes);
-      } catch (...) {
-        errors[i] = std::current_exception();
-        failed = true;
-      }
+      const RotatingComponent at = rotating_component_at(fit, speeds[i]);
+      built[i] = reduce(at.component.stiffness, at.component.mass, boundary, method, modes);
     }
   };
-  std::vector<std::thread> started;
-  const size_t wanted = std::min(n, static_cast<size_t>(std::max(threads, 1)));
-  try {
-    started.reserve(wanted);
-    for (size_t t = 1; t < wanted; ++t)
-      started.emplace_back(worker);
-  } catch (const std::system_error&) { // a thread not started: the others share its speeds
-  } catch (const std::bad_alloc&) {    // no memory for its state: the same
-  }
-  worker();
-  for (std::thread& t : started)
-    t.join();
+  run_on_threads(static_cast<int>(std::min(n, static_cast<size_t>(std::max(threads, 1)))), worker,
+                 failed);
   std::vector<ReducedBasis> bases;
   for (size_t i = 0; i < n; ++i) {
-    if (errors[i]) std::rethrow_exception(errors[i]);
     if (!built[i]) throw std::logic_error("speed_subspace: a basis speed was not built");
     bases.push_back(std::move(*built[i]));
   }
