@@ -133,7 +133,14 @@ def main():
               ("contact_fraction", "contact fraction (rows with a closed contact)"),
               ("max_contact_force", f"max normal contact force [{force_unit}]")]
     liner = "max_wear_depth" in rows[0]
-    worn_speeds = sorted({abs(number(r["speed_rad_s"])) for r in rows if r["status"] == "worn_through"})
+    def worn_through(run=None):
+        """|speeds| of the runs stopped worn through (of `run` only if given), in row order."""
+        return [abs(number(r["speed_rad_s"])) for r in rows
+                if r["status"] == "worn_through" and run in (None, r["run"])]
+
+    worn_speeds = sorted(set(worn_through()))
+    # The bands' width: the smallest speed step.
+    step = min((b - a for a, b in zip(speeds, speeds[1:])), default=1.0)
     if liner:
         panels.append(("max_wear_depth", f"deepest wear of the liner [{length_unit}]"))
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 3 * len(panels)), sharex=True)
@@ -143,7 +150,6 @@ def main():
             ax.plot(x, y, ".-", ms=3, lw=0.8, label=run)
         # A worn-through run stopped early (often before the transient: no
         # indicators): a grey band over its speed on every panel.
-        step = min((b - a for a, b in zip(speeds, speeds[1:])), default=1.0)
         for i, s in enumerate(worn_speeds):
             ax.axvspan(s - step / 2, s + step / 2, color="0.8", lw=0,
                        label="liner worn through (run stopped)" if i == 0 and ax is axes[0] else None)
@@ -260,8 +266,7 @@ def main():
             lobes = [r["wear_lobes"] for r in rows if r["run"] == run and r["status"] != "failed"]
             md.append(f"- {run}: the deepest wear, {w[j]:.4g}, is at {xw[j]:g} rad/s "
                       f"({lobes[j]} lobes there); liner: {summary.get('liner', {})}.")
-            worn = [abs(number(r["speed_rad_s"])) for r in rows
-                    if r["run"] == run and r["status"] == "worn_through"]
+            worn = worn_through(run)
             if worn:
                 md.append(f"- {run}: the liner wore through (a cell's wear reached its thickness; "
                           f"the run stopped there, its indicators up to that step, grey bands on "
