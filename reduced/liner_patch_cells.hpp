@@ -87,7 +87,8 @@ double patch_compliant(const AbradableCells& cells, const std::vector<BarState>&
 /// sorted breakpoints and each G(b) the root search has evaluated are kept
 /// while `from` stays the same bit for bit, so a repeated solve costs the
 /// binary search's comparisons. G(b) is the same sum in the same order as
-/// patch_compliant's, so every call returns patch_compliant's bits.
+/// patch_compliant's, so every call returns patch_compliant's bits. One
+/// object serves one liner's cells (G depends on their k and k_H).
 class PatchCompliantSolve {
 public:
   double operator()(const AbradableCells& cells, const std::vector<BarState>& from,
