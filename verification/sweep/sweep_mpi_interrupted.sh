@@ -112,7 +112,10 @@ stop_sweep() {
     sleep 0.1
   done
   if [ "$ended" -eq 0 ]; then
-    fail "$name: mpirun still runs 60 s after $what"
+    # What each side said last, for the diagnosis of a hang (seen once in
+    # session 23's rehearsal, under load; not reproduced in 2 runs after).
+    fail "$name: mpirun still runs 60 s after $what; stderr ends: $(tail -n 4 "$work/$name.err" | tr '\n' '|')"
+    ps -o pid,stat,etime,args --ppid "$mpirun_pid" 2>/dev/null | head -n 5
     kill -KILL -- "-$mpirun_pid" 2>/dev/null
     wait "$mpirun_pid" 2>/dev/null
     mpirun_pid=""
