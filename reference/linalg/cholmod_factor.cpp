@@ -70,7 +70,7 @@ CholmodFactor::Status CholmodFactor::factorize(const Eigen::SparseMatrix<double>
   if (m_cholmod->factor == nullptr) {
     m_n = lower.rows();
     m_pattern_nonzeros = lower.nonZeros();
-    m_cholmod->factor = cholmod_analyze(&a, c);
+    m_cholmod->factor = cholmod_analyze_serialized(&a, c);
     throw_if_out_of_memory(*c);
     if (m_cholmod->factor == nullptr || c->status < CHOLMOD_OK) {
       m_status = Status::failed;

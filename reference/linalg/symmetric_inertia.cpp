@@ -38,7 +38,7 @@ Inertia sparse_inertia(const Eigen::SparseMatrix<double>& lower) {
   c.common.supernodal = CHOLMOD_SIMPLICIAL;
   c.common.final_ll = 0; // keep L D L^T
   cholmod_sparse a = cholmod_lower_view(lower);
-  c.factor = cholmod_analyze(&a, &c.common);
+  c.factor = cholmod_analyze_serialized(&a, &c.common);
   if (c.common.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
   if (c.factor == nullptr) {
     inertia.why = "CHOLMOD analysis failed (status " + std::to_string(c.common.status) + ")";

@@ -78,7 +78,7 @@ MassFactor::MassFactor(const Eigen::SparseMatrix<double>& mass) {
   Eigen::SparseMatrix<double> lower = mass.triangularView<Eigen::Lower>();
   lower.makeCompressed();
   cholmod_sparse a = cholmod_lower_view(lower);
-  c.factor = cholmod_analyze(&a, &c.common);
+  c.factor = cholmod_analyze_serialized(&a, &c.common);
   const bool factorized = c.factor != nullptr && cholmod_factorize(&a, c.factor, &c.common);
   // Out of memory is no property of M: thrown as operator new would.
   if (c.common.status == CHOLMOD_OUT_OF_MEMORY) throw std::bad_alloc();
