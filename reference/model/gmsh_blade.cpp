@@ -25,9 +25,7 @@ constexpr double deg = M_PI / 180.0;
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 std::string number(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.15g", x);
-  return buffer;
+  return deck_number(x);
 }
 
 /// Rejects `value` of `field` unless low (<|<=) value (<|<=) high.
@@ -91,11 +89,6 @@ double station_tau(int j) {
   return -1.0 + 2.0 * j / (n_tip_stations - 1);
 }
 
-/// Mesh as gmsh wrote it (Abaqus format): nodes by number, C3D10 elements.
-struct GmshMesh {
-  std::map<long, Eigen::Vector3d> nodes;
-  std::vector<std::array<long, 11>> elements; ///< number, then 10 nodes
-};
 
 std::string upper(std::string s) {
   for (char& c : s)
@@ -202,13 +195,21 @@ bool has_error_line(const std::string& output) {
 constexpr std::array<std::array<int, 2>, 6> c3d10_edges{
     {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}}};
 
-void write_node_set(std::ostream& out, const std::string& name, const std::vector<long>& nodes) {
+
+} // namespace
+
+std::string deck_number(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.15g", x);
+  return buffer;
+}
+
+void write_deck_node_set(std::ostream& out, const std::string& name,
+                         const std::vector<long>& nodes) {
   out << "*NSET, NSET=" << name << "\n";
   for (size_t i = 0; i < nodes.size(); ++i)
     out << nodes[i] << ((i + 1) % 8 == 0 || i + 1 == nodes.size() ? ",\n" : ", ");
 }
-
-} // namespace
 
 void check_gmsh_blade_spec(const GmshBladeSpec& s) {
   require("span", s.span, 0.0, true, inf, true, "mm");
@@ -282,6 +283,10 @@ double gmsh_blade_volume(const GmshBladeSpec& spec) {
 }
 
 std::string gmsh_blade_geo(const GmshBladeSpec& spec) {
+  return gmsh_blade_geo(spec, GmshGeoAddition{});
+}
+
+std::string gmsh_blade_geo(const GmshBladeSpec& spec, const GmshGeoAddition& addition) {
   check_gmsh_blade_spec(spec);
   const SectionShape shape(spec);
   const double t = spec.thickness;
@@ -336,9 +341,12 @@ std::string gmsh_blade_geo(const GmshBladeSpec& spec) {
     << ", " << number(spec.root_length) << ", " << number(spec.root_width) << "};\n"
     << "Rotate {{1, 0, 0}, {0, 0, 0}, " << number((90.0 - spec.stagger) * deg)
     << "} { Volume{2}; }\n"
-    << "v() = BooleanUnion{ Volume{1}; Delete; }{ Volume{2}; Delete; };\n"
+    << addition.volumes
+    << "v() = BooleanUnion{ Volume{1}; Delete; }{ Volume{2}; "
+    << (addition.fused.empty() ? "" : "Volume{" + addition.fused + "}; ") << "Delete; };\n"
     << "If (#v() != 1)\n  Error(\"rsi: the union of blade and root block is not one volume\");\n"
-    << "  Abort;\nEndIf\n";
+    << "  Abort;\nEndIf\n"
+    << addition.after_union;
   // The tip face and the interior stations embedded in it.
   const double x_tip = spec.root_radius + spec.root_height + spec.span;
   const double eps = 1e-4 * spec.thickness;
@@ -468,8 +476,8 @@ void write_deck(std::ostream& out, const GmshBladeSpec& spec, const GmshMesh& me
     for (int i = 0; i < 11; ++i)
       out << e[i] << (i < 10 ? ", " : "\n");
   }
-  write_node_set(out, "ROOT", root);
-  write_node_set(out, "TIP", tip);
+  write_deck_node_set(out, "ROOT", root);
+  write_deck_node_set(out, "TIP", tip);
   out << material_and_clamping(spec);
 }
 
@@ -482,63 +490,79 @@ std::string gmsh_blade_cache_key(const GmshBladeSpec& spec) {
   return gmsh_blade_geo(spec) + "// deck writer 2\n" + material_and_clamping(spec);
 }
 
-std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& dir) {
+GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir,
+                                 double tol) {
   namespace fs = std::filesystem;
-  const std::string geo_text = gmsh_blade_geo(spec); // checks the spec
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec)
     throw std::runtime_error("write_gmsh_blade_deck: cannot create " + dir + ": " + ec.message());
   const std::string geo = dir + "/blade.geo";
   const std::string gmsh_mesh = dir + "/blade_gmsh.inp";
-  const std::string deck = dir + "/blade.inp";
   fs::remove(gmsh_mesh, ec); // never read a previous run's files
-  fs::remove(deck, ec);
   {
     std::ofstream out(geo);
     out << geo_text;
     if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + geo);
   }
-
-  const std::vector<std::string> command{"gmsh", "blade.geo",      "-3",      "-format", "inp",
-                                         "-o",   "blade_gmsh.inp", "-nopopup"};
-  const std::string where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
-  run_gmsh(command, dir, where);
-
-  const GmshMesh mesh = read_gmsh_inp(gmsh_mesh);
-  auto fail = [&](const std::string& what) {
-    return GmshError("write_gmsh_blade_deck: the mesh of '" + command_text(command) + "'" + where +
-                     " " + what);
-  };
-  if (mesh.elements.empty()) throw fail("has no C3D10 element");
-  const double extent = spec.root_radius + spec.root_height + spec.span + spec.root_length;
-  const double tol = 1e-9 * extent;
+  GmshMeshOutcome outcome;
+  outcome.command = {"gmsh", "blade.geo",      "-3",      "-format", "inp",
+                     "-o",   "blade_gmsh.inp", "-nopopup"};
+  outcome.where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
+  run_gmsh(outcome.command, dir, outcome.where);
+  outcome.mesh = read_gmsh_inp(gmsh_mesh);
+  if (outcome.mesh.elements.empty()) throw outcome.failure("has no C3D10 element");
   std::string problem;
-  const std::set<long> used = check_elements(mesh, tol, problem);
-  if (!problem.empty()) throw fail(problem);
+  outcome.used = check_elements(outcome.mesh, tol, problem);
+  if (!problem.empty()) throw outcome.failure(problem);
+  return outcome;
+}
 
-  std::vector<long> root; // the clamped face x = root_radius
-  for (const long id : used)
-    if (std::abs(mesh.nodes.at(id).x() - spec.root_radius) <= tol) root.push_back(id);
-  if (root.size() < 3) throw fail("has fewer than 3 nodes on the root block's bottom face");
+GmshError GmshMeshOutcome::failure(const std::string& what) const {
+  return GmshError("write_gmsh_blade_deck: the mesh of '" + command_text(command) + "'" + where +
+                   " " + what);
+}
 
-  std::vector<long> tip; // the node at each station
+std::vector<long> gmsh_blade_tip_nodes(const GmshBladeSpec& spec, const GmshMeshOutcome& meshed) {
+  std::vector<long> tip;
   const std::vector<Eigen::Vector3d> stations = gmsh_blade_tip_stations(spec);
   for (int j = 0; j < n_tip_stations; ++j) {
     long best = -1;
     double best_distance = inf;
-    for (const long id : used) {
-      const double d = (mesh.nodes.at(id) - stations[j]).norm();
+    for (const long id : meshed.used) {
+      const double d = (meshed.mesh.nodes.at(id) - stations[j]).norm();
       if (d < best_distance) {
         best_distance = d;
         best = id;
       }
     }
     if (best_distance > 1e-6 * spec.thickness)
-      throw fail("has no node at tip station " + std::to_string(j) + " (nearest " +
-                 number(best_distance) + " mm away)");
+      throw meshed.failure("has no node at tip station " + std::to_string(j) + " (nearest " +
+                           number(best_distance) + " mm away)");
     tip.push_back(best);
   }
+  return tip;
+}
+
+std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const std::string geo_text = gmsh_blade_geo(spec); // checks the spec
+  const std::string deck = dir + "/blade.inp";
+  std::error_code ec;
+  fs::remove(deck, ec); // never leave a previous run's deck beside a failed mesh
+  const double extent = spec.root_radius + spec.root_height + spec.span + spec.root_length;
+  const double tol = 1e-9 * extent;
+  const GmshMeshOutcome meshed = mesh_gmsh_script(geo_text, dir, tol);
+  const GmshMesh& mesh = meshed.mesh;
+  const std::set<long>& used = meshed.used;
+  auto fail = [&](const std::string& what) { return meshed.failure(what); };
+
+  std::vector<long> root; // the clamped face x = root_radius
+  for (const long id : used)
+    if (std::abs(mesh.nodes.at(id).x() - spec.root_radius) <= tol) root.push_back(id);
+  if (root.size() < 3) throw fail("has fewer than 3 nodes on the root block's bottom face");
+
+  const std::vector<long> tip = gmsh_blade_tip_nodes(spec, meshed);
 
   const std::string partial = deck + ".partial"; // renamed when complete
   {

@@ -93,6 +93,10 @@
 //
 // Valid ranges (check_gmsh_blade_spec): see each member.
 
+#include <array>
+#include <iosfwd>
+#include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -173,6 +177,53 @@ double gmsh_blade_volume(const GmshBladeSpec& spec);
 /// The gmsh script (OpenCASCADE kernel) of the model, meshing options
 /// included. Checks the spec.
 std::string gmsh_blade_geo(const GmshBladeSpec& spec);
+
+/// Lines another model adds to the blade's script (gmsh_bladed_disk.hpp):
+/// `volumes`, after the root block (volume 2), makes more volumes, named by
+/// the gmsh list `fused` (e.g. "ring()"), which the union fuses with blade
+/// and block; `after_union` follows the union's check. Empty: the blade's
+/// own script, byte for byte.
+struct GmshGeoAddition {
+  std::string volumes;
+  std::string fused;
+  std::string after_union;
+};
+std::string gmsh_blade_geo(const GmshBladeSpec& spec, const GmshGeoAddition& addition);
+
+/// Mesh as gmsh wrote it (Abaqus format): nodes by number, C3D10 elements.
+struct GmshMesh {
+  std::map<long, Eigen::Vector3d> nodes;
+  std::vector<std::array<long, 11>> elements; ///< number, then 10 nodes
+};
+
+/// A checked mesh of a gmsh script, and how it was made (for messages).
+struct GmshMeshOutcome {
+  GmshMesh mesh;
+  std::set<long> used; ///< the nodes the elements use
+  std::vector<std::string> command;
+  std::string where;
+  /// GmshError("... the mesh of 'COMMAND' (in DIR, ...) WHAT").
+  GmshError failure(const std::string& what) const;
+};
+
+/// Writes `geo_text` to DIR/blade.geo, runs gmsh (DIR/blade_gmsh.inp) and
+/// reads and checks its C3D10 mesh: nodes present, corners positively
+/// oriented, midside nodes the Abaqus edge midpoints to `tol` [mm]. Throws
+/// GmshError (gmsh missing or failing, no element, a bad element) or
+/// std::runtime_error (a file not written).
+GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir,
+                                 double tol);
+
+/// The mesh node at each of the n_tip_stations tip stations, in their
+/// order; throws meshed.failure(...) naming a station with no node within
+/// 1e-6 thickness of it.
+std::vector<long> gmsh_blade_tip_nodes(const GmshBladeSpec& spec, const GmshMeshOutcome& meshed);
+
+/// A number as the blade's deck writes it (%.15g).
+std::string deck_number(double x);
+/// *NSET, NSET=NAME and the numbers, 8 a line.
+void write_deck_node_set(std::ostream& out, const std::string& name,
+                         const std::vector<long>& nodes);
 
 /// Everything blade.inp is made of, as text for a cache key: the gmsh
 /// script (geometry, mesh options) and the deck's material, section and
