@@ -92,7 +92,9 @@ void load(const fs::path& folder, const std::string& bytes) {
   const rsi::ComponentCase c = rsi::parse_component_case(document, case_path);
   if (!inside(folder, c.source_path)) return;
   if (!c.calculix_matrices.empty() && !inside(folder, c.calculix_matrices)) return;
-  if (c.source == rsi::ComponentSource::gmsh_blade) return;
+  if (c.source == rsi::ComponentSource::gmsh_blade ||
+      c.source == rsi::ComponentSource::gmsh_bladed_disk)
+    return;
   if (c.source == rsi::ComponentSource::calculix_deck) {
     // *INCLUDE names files the harness cannot confine (relative to the
     // deck's folder, at any depth): only decks without one are read.

@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 #include <filesystem>
+#include <functional>
 
 #include "calculix_deck.hpp"
 #include "calculix_features.hpp"
@@ -105,6 +106,42 @@ GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
   return spec;
 }
 
+/// The bladed disk's parameters: every key optional, the default otherwise
+/// (gmsh_bladed_disk.hpp); "blade" as gmsh_blade's object; ranges checked by
+/// check_gmsh_bladed_disk_spec.
+GmshBladedDiskSpec read_gmsh_bladed_disk(ObjectReader r, const json& object) {
+  GmshBladedDiskSpec spec;
+  r.claim("blade");
+  if (object.contains("blade")) {
+    if (!object.at("blade").is_object()) r.fail(r.full("blade"), "must be an object of the blade's parameters");
+    spec.blade = read_gmsh_blade(r.object("blade"), object.at("blade"));
+  }
+  if (object.contains("sectors")) spec.sectors = static_cast<int>(r.integer("sectors", 3, 200));
+  else r.claim("sectors");
+  const std::pair<const char*, double*> fields[] = {{"bore_radius", &spec.bore_radius},
+                                                    {"rim_radius", &spec.rim_radius},
+                                                    {"disk_width", &spec.disk_width}};
+  for (const auto& [key, value] : fields)
+    if (object.contains(key))
+      *value = r.number(key, {-inf, inf, true, true, "(see data/README.md)"});
+    else
+      r.claim(key);
+  r.finish();
+  try {
+    check_gmsh_bladed_disk_spec(spec);
+  } catch (const std::invalid_argument& e) {
+    // "GmshBladedDiskSpec.FIELD: ..." -> the key of the case file (the
+    // blade's own fields were checked by read_gmsh_blade).
+    std::string what = e.what();
+    const std::string prefix = "GmshBladedDiskSpec.";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    const size_t colon = what.find(':');
+    r.fail(r.full(what.substr(0, colon)),
+           colon == std::string::npos ? what : what.substr(colon + 2));
+  }
+  return spec;
+}
+
 /// `text` with every occurrence of `from` replaced by `to`.
 std::string replace_all(std::string text, const std::string& from, const std::string& to) {
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
@@ -130,29 +167,32 @@ std::string one_line(const std::string& text) {
   return out;
 }
 
-/// The deck of the gmsh blade, in CACHE/gmsh-blade-<hash>/, the hash of
-/// everything the deck is made of (gmsh_blade_cache_key: the script and
-/// the material), so that a changed material never reads an older deck.
-/// A gmsh failure keeps its folder as CACHE/gmsh-blade-<hash>.failed (the
-/// script and gmsh.log the message names), as ccx's failures are kept.
-std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_dir,
-                            const std::string& case_path) {
-  const std::string key = gmsh_blade_cache_key(spec);
+/// A deck that gmsh's mesh makes, in CACHE/NAME-<hash>/DECK, the hash of
+/// everything the deck is made of (`key`: the script and the material), so
+/// that a changed material never reads an older deck; `write(DIR)` writes
+/// DIR/DECK. A gmsh failure keeps its folder as CACHE/NAME-<hash>.failed
+/// (the script and gmsh.log the message names), as ccx's failures are kept;
+/// `source` is the case file's key its message names.
+std::string cached_gmsh_deck(const std::string& key, const std::string& name,
+                             const std::string& deck,
+                             const std::function<void(const std::string&)>& write,
+                             const std::string& source, const std::string& cache_dir,
+                             const std::string& case_path) {
   std::uint64_t h = 14695981039346656037ull;
   for (unsigned char ch : key) {
     h ^= ch;
     h *= 1099511628211ull;
   }
-  char name[40];
-  std::snprintf(name, sizeof name, "gmsh-blade-%016llx", static_cast<unsigned long long>(h));
-  const std::filesystem::path entry = std::filesystem::path(cache_dir) / name;
-  if (std::filesystem::exists(entry / "blade.inp")) return (entry / "blade.inp").string();
+  char hash[20];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(h));
+  const std::filesystem::path entry = std::filesystem::path(cache_dir) / (name + "-" + hash);
+  if (std::filesystem::exists(entry / deck)) return (entry / deck).string();
   std::filesystem::path work = entry;
   work += ".tmp" + std::to_string(::getpid());
   std::error_code ec;
   std::filesystem::remove_all(work, ec);
   try {
-    write_gmsh_blade_deck(spec, work.string());
+    write(work.string());
   } catch (const GmshError& e) {
     std::filesystem::path failed = entry;
     failed += ".failed";
@@ -162,7 +202,7 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
     std::string what = replace_all(e.what(), work.string(), kept);
     const std::string prefix = "write_gmsh_blade_deck: ";
     if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
-    throw ImportError(case_path + ": key 'component.source.gmsh_blade': " + one_line(what));
+    throw ImportError(case_path + ": key '" + source + "': " + one_line(what));
   } catch (const Interrupted&) {
     // Stopped by a signal (forwarded to gmsh): no deck, no entry.
     std::filesystem::remove_all(work, ec);
@@ -172,11 +212,24 @@ std::string gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& cache_
     throw ImportError(e.what(), failed_input(FailedInput::ccx_cache));
   }
   std::filesystem::rename(work, entry, ec);
-  if (ec && !std::filesystem::exists(entry / "blade.inp"))
+  if (ec && !std::filesystem::exists(entry / deck))
     throw ImportError("cannot rename " + work.string() + ": " + ec.message(),
                       failed_input(FailedInput::ccx_cache));
   std::filesystem::remove_all(work, ec);
-  return (entry / "blade.inp").string();
+  return (entry / deck).string();
+}
+
+/// The deck of the case's gmsh model (gmsh_blade or gmsh_bladed_disk).
+std::string gmsh_deck(const ComponentCase& c, const std::string& cache_dir) {
+  if (c.source == ComponentSource::gmsh_blade)
+    return cached_gmsh_deck(
+        gmsh_blade_cache_key(c.gmsh_blade), "gmsh-blade", "blade.inp",
+        [&](const std::string& dir) { write_gmsh_blade_deck(c.gmsh_blade, dir); },
+        "component.source.gmsh_blade", cache_dir, c.case_path);
+  return cached_gmsh_deck(
+      gmsh_bladed_disk_cache_key(c.gmsh_bladed_disk), "gmsh-bladed-disk", "disk.inp",
+      [&](const std::string& dir) { write_gmsh_bladed_disk_decks(c.gmsh_bladed_disk, dir); },
+      "component.source.gmsh_bladed_disk", cache_dir, c.case_path);
 }
 
 /// The "rubbing" object (component_case.hpp, data/README.md).
@@ -416,6 +469,10 @@ std::string source_key(const ComponentCase& c, const ComponentLoadOptions& optio
     return material ? "keys 'component.source.gmsh_blade.young_modulus' and "
                       "'component.source.gmsh_blade.density'"
                     : "key 'component.source.gmsh_blade'";
+  case ComponentSource::gmsh_bladed_disk:
+    return material ? "keys 'component.source.gmsh_bladed_disk.blade.young_modulus' and "
+                      "'component.source.gmsh_bladed_disk.blade.density'"
+                    : "key 'component.source.gmsh_bladed_disk'";
   case ComponentSource::calculix_deck:
     break;
   }
@@ -489,10 +546,12 @@ ComponentCase parse_component_case(const json& document, const std::string& path
                     (sj.size() == 1 || (sj.size() == 2 && sj.contains("calculix_matrices")));
   const bool folder = sj.is_object() && sj.size() == 1 && sj.contains("matrix_market");
   const bool blade = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_blade");
-  if (!deck && !folder && !blade)
+  const bool disk = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_bladed_disk");
+  if (!deck && !folder && !blade && !disk)
     comp.fail(comp.full("source"), "must be {\"calculix_deck\": file[, \"calculix_matrices\": "
-                                   "\"dir/JOB\"]}, {\"matrix_market\": folder} or "
-                                   "{\"gmsh_blade\": {parameters}}, got " +
+                                   "\"dir/JOB\"]}, {\"matrix_market\": folder}, "
+                                   "{\"gmsh_blade\": {parameters}} or "
+                                   "{\"gmsh_bladed_disk\": {parameters}}, got " +
                                        sj.dump().substr(0, 80));
   if (deck) {
     c.source = ComponentSource::calculix_deck;
@@ -502,9 +561,15 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   } else if (folder) {
     c.source = ComponentSource::matrix_market;
     c.source_path = resolve(string_value(source, sj, "matrix_market"), path);
-  } else {
+  } else if (blade) {
     c.source = ComponentSource::gmsh_blade;
     c.gmsh_blade = read_gmsh_blade(source.object("gmsh_blade"), sj.at("gmsh_blade"));
+  } else {
+    if (!sj.at("gmsh_bladed_disk").is_object())
+      source.fail(source.full("gmsh_bladed_disk"), "must be an object of the disk's parameters");
+    c.source = ComponentSource::gmsh_bladed_disk;
+    c.gmsh_bladed_disk =
+        read_gmsh_bladed_disk(source.object("gmsh_bladed_disk"), sj.at("gmsh_bladed_disk"));
   }
   source.finish();
 
@@ -528,7 +593,8 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     boundary.finish();
   } else if (c.source == ComponentSource::matrix_market) {
     c.boundary_from_dofs = true;
-  } else if (c.source == ComponentSource::gmsh_blade) {
+  } else if (c.source == ComponentSource::gmsh_blade ||
+             c.source == ComponentSource::gmsh_bladed_disk) {
     c.boundary_node_set = "TIP";
   } else {
     comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
@@ -645,17 +711,19 @@ ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions&
                     ": rsi would mix that deck's nodes and sets with the other deck's matrices; "
                     "drop " +
                     options.source_named() + ", or run it on a case without calculix_matrices");
-  if (!options.source_override.empty() && c.source == ComponentSource::gmsh_blade)
-    throw CaseError(c.case_path +
-                    ": key 'component.source.gmsh_blade': the case builds its "
-                    "blade deck from these parameters, and " +
+  const bool gmsh = c.source == ComponentSource::gmsh_blade ||
+                    c.source == ComponentSource::gmsh_bladed_disk;
+  if (!options.source_override.empty() && gmsh)
+    throw CaseError(c.case_path + ": " + source_key(c, ComponentLoadOptions{}, false) +
+                    ": the case builds its " +
+                    (c.source == ComponentSource::gmsh_blade ? "blade" : "bladed-disk") +
+                    " deck from these parameters, and " +
                     options.source_named() + " names " + options.source_override + ": " +
                     options.source_named() +
                     " replaces a calculix_deck or matrix_market source only; write a case whose "
                     "calculix_deck names that deck (with its boundary) instead");
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
-  if (c.source == ComponentSource::gmsh_blade && options.source_override.empty())
-    source = gmsh_blade_deck(c.gmsh_blade, options.ccx_cache, c.case_path);
+  if (gmsh && options.source_override.empty()) source = gmsh_deck(c, options.ccx_cache);
   if (!std::filesystem::is_regular_file(source))
     throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
                       "' is not a file (the deck; " + options.source_named() + " overrides it)");

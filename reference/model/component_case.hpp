@@ -11,7 +11,9 @@
 //                   JOB.sti/.mas/.dof a ccx run of the deck wrote; or instead
 //                   {"matrix_market": "folder"}, or {"gmsh_blade": {parameters}}: the
 //                   project's blade (gmsh_blade.hpp), meshed by gmsh into the ccx cache,
-//                   boundary by default its node set TIP)
+//                   boundary by default its node set TIP; or {"gmsh_bladed_disk":
+//                   {"sectors": N, ..., "blade": {parameters}}}: N such blades on a disk
+//                   (gmsh_bladed_disk.hpp), boundary by default every blade's TIP)
 //                  "boundary": {"nodes": [188, 190, ...]},
 //                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
 //    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
@@ -41,10 +43,11 @@
 #include "case_file.hpp"
 #include "component.hpp"
 #include "gmsh_blade.hpp"
+#include "gmsh_bladed_disk.hpp"
 
 namespace rsi {
 
-enum class ComponentSource { calculix_deck, matrix_market, gmsh_blade };
+enum class ComponentSource { calculix_deck, matrix_market, gmsh_blade, gmsh_bladed_disk };
 
 struct ModalCampaign {
   std::vector<std::string> methods; ///< "cb", "ccm", "macneal"
@@ -148,6 +151,7 @@ struct ComponentCase {
   std::string boundary_node_set;           ///< an *NSET of the deck (upper case)
   bool boundary_from_dofs = false;         ///< matrix_market: dofs.csv's flags
   GmshBladeSpec gmsh_blade;                ///< gmsh_blade: the blade's parameters
+  GmshBladedDiskSpec gmsh_bladed_disk;     ///< gmsh_bladed_disk: the disk's and its blade's
   std::string units;
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;

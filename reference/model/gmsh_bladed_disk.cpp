@@ -174,6 +174,13 @@ std::string gmsh_bladed_disk_sector_geo(const GmshBladedDiskSpec& spec) {
   return gmsh_blade_geo(spec.blade, GmshGeoAddition{v.str(), "ring()", after.str()});
 }
 
+std::string gmsh_bladed_disk_cache_key(const GmshBladedDiskSpec& spec) {
+  // The version names the deck writer: a change to what it writes from the
+  // same mesh must change it.
+  return gmsh_bladed_disk_sector_geo(spec) + "// bladed disk deck writer 1\n" +
+         material_lines(spec.blade);
+}
+
 GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
                                                  const std::string& dir) {
   const std::string geo = gmsh_bladed_disk_sector_geo(spec); // checks the spec
@@ -234,6 +241,7 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
   std::vector<std::array<long, 11>> elements;
   std::set<long> clamped;
   std::ostringstream tips;
+  std::vector<long> all_tips;
   for (int k = 0; k < n; ++k) {
     for (const long j : meshed.used)
       if (!pair.count(j)) nodes[k * stride + j] = turned(mesh.nodes.at(j), k * a);
@@ -247,14 +255,17 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
     std::vector<long> tip_k;
     for (const long j : tip) tip_k.push_back(global(k, j));
     write_deck_node_set(tips, "TIP" + std::to_string(k + 1), tip_k);
+    all_tips.insert(all_tips.end(), tip_k.begin(), tip_k.end());
   }
+  write_deck_node_set(tips, "TIP", all_tips);
 
   std::ostringstream disk;
   disk.imbue(std::locale::classic());
   disk << "** rsi gmsh_bladed_disk (reference/model/gmsh_bladed_disk.hpp): " << n
        << " sectors of blade.geo beside this deck, turned about z.\n"
        << "** " << nodes.size() << " nodes, " << elements.size() << " C3D10, " << clamped.size()
-       << " clamped (NSET BORE), contact nodes NSET TIP1 .. TIP" << n << ". Model only.\n";
+       << " clamped (NSET BORE), contact nodes NSET TIP1 .. TIP" << n
+       << " (all in TIP, blade by blade). Model only.\n";
   write_nodes(disk, nodes);
   write_elements(disk, elements);
   write_deck_node_set(disk, "BORE", std::vector<long>(clamped.begin(), clamped.end()));

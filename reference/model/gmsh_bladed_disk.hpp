@@ -19,7 +19,8 @@
 // 1 + the largest node number of the sector), except the nodes of its face
 // LEFT, which are sector k - 1's (mod N) paired RIGHT nodes; element e of
 // sector k is k * element_stride + e. Node sets: BORE (clamped), TIPk (k = 1
-// .. N, the blade's 16 contact nodes of gmsh_blade.hpp in their order).
+// .. N, the blade's 16 contact nodes of gmsh_blade.hpp in their order), TIP
+// (all of them, TIP1's first).
 //
 // Files written into DIR: blade.geo, blade_gmsh.inp, gmsh.log (the
 // sector's), sector.inp (the sector alone with ccx's cyclic symmetry tie:
@@ -51,6 +52,10 @@ void check_gmsh_bladed_disk_spec(const GmshBladedDiskSpec& spec);
 /// The sector's gmsh script: the blade's (gmsh_blade_geo) with the disk
 /// sector fused in and the periodic faces. Checks the spec.
 std::string gmsh_bladed_disk_sector_geo(const GmshBladedDiskSpec& spec);
+
+/// Everything the decks are made of, as text for a cache key (the sector's
+/// script and the material lines). Checks the spec.
+std::string gmsh_bladed_disk_cache_key(const GmshBladedDiskSpec& spec);
 
 struct GmshBladedDiskDecks {
   std::string disk;    ///< DIR/disk.inp, the assembly

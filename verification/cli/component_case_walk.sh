@@ -4,7 +4,8 @@
 # must change the output of the commands it feeds or their message; a key
 # whose change changes nothing is read and ignored (component_case_walk.py
 # says how). A two-brick CalculiX deck (24 dofs) for most keys, the gmsh
-# blade's coarse default for its own; the ccx cache is the suite's.
+# blade's coarse default for its own, a 3-sector coarse bladed disk for its
+# own; the ccx cache is the suite's.
 # About 40 s in Release. Skipped (exit 77) without gmsh or ccx.
 # Usage: component_case_walk.sh RSI SOURCE_DIR CCX_CACHE
 set -u

@@ -2,10 +2,12 @@
 // gmsh_bladed_disk.hpp, issue 27 items 1 and 5).
 //
 // 1. The spec's ranges: each bad field named (no gmsh needed).
-// 2. The CI model (6 sectors, element size 20 mm): the assembly's
+// 2. The CI model, data/cases/bladed-disk3d-ci.json (6 sectors, element
+//    size 20 mm), loaded as every command loads a component (gmsh's deck
+//    cached, ccx's matrices, the boundary its 96 tip nodes): the assembly's
 //    nodal-diameter families against ccx's own cyclic symmetry analysis of
-//    the sector deck the same call writes. The assembly's K and M are
-//    ccx's (MATRIXSTORAGE of disk.inp), its modes rsi's (lowest_modes); the
+//    the sector deck written beside it. The assembly's K and M are ccx's
+//    (MATRIXSTORAGE of disk.inp), its modes rsi's (lowest_modes); the
 //    sector's are ccx's cyclic solve of sector.inp for diameters 0 to 3.
 //    Every diameter k of a 6-fold structure gives single frequencies for
 //    k = 0 and 3 and double ones for k = 1, 2, so the assembly's lowest 30
@@ -17,6 +19,7 @@
 //    skipped, saying so.
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -25,11 +28,11 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
-#include "calculix_deck.hpp"
-#include "calculix_matrices.hpp"
-#include "calculix_run.hpp"
+#include "case_file.hpp"
 #include "child_process.hpp"
+#include "component_case.hpp"
 #include "gmsh_bladed_disk.hpp"
 #include "gmsh_blade_fit.hpp"
 #include "modal_analysis.hpp"
@@ -74,6 +77,28 @@ TEST(GmshBladedDisk, SpecRanges) {
   expect_refused(s, "GmshBladeSpec.chord");
 }
 
+/// The case file's keys: each bad one named as the file spells it.
+TEST(GmshBladedDisk, CaseFileNamesTheBadKey) {
+  const auto refused = [](const std::string& disk, const std::string& key) {
+    const nlohmann::json doc = nlohmann::json::parse(
+        R"({"component": {"name": "d", "source": {"gmsh_bladed_disk": )" + disk +
+        R"(}, "units": "N, mm, t, s"}})");
+    try {
+      parse_component_case(doc, "case.json");
+      ADD_FAILURE() << disk << ": accepted";
+    } catch (const CaseError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  };
+  refused(R"({"sectors": 26})", "component.source.gmsh_bladed_disk.sectors");
+  refused(R"({"sectors": 2})", "component.source.gmsh_bladed_disk.sectors");
+  refused(R"({"rim_radius": 150})", "component.source.gmsh_bladed_disk.rim_radius");
+  refused(R"({"bore_radius": 200})", "component.source.gmsh_bladed_disk.bore_radius");
+  refused(R"({"blade": {"chord": -1}})", "component.source.gmsh_bladed_disk.blade.chord");
+  refused(R"({"blades": 3})", "component.source.gmsh_bladed_disk.blades");
+  refused(R"(7)", "component.source.gmsh_bladed_disk");
+}
+
 /// omega^2 of the cyclic EIGENVALUE OUTPUT tables of a ccx .dat: per
 /// diameter, each distinct eigenvalue once (ccx lists every one twice, rows
 /// "diameter mode omega^2 omega f imaginary"; modes 1, 3, 5, ... kept).
@@ -107,26 +132,39 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
     std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());
     GTEST_SKIP() << missing << " not on PATH";
   }
-  GmshBladedDiskSpec spec; // the CI model
-  spec.sectors = 6;
-  spec.blade.element_size = 20.0;
+  const std::string case_path = std::string(RSI_SOURCE_DIR) + "/data/cases/bladed-disk3d-ci.json";
+  const ComponentCase c = parse_component_case(read_case_document(case_path), case_path);
+  ASSERT_EQ(c.source, ComponentSource::gmsh_bladed_disk);
+  const GmshBladedDiskSpec& spec = c.gmsh_bladed_disk;
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("rsi_bladed_disk_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  const GmshBladedDiskDecks decks = write_gmsh_bladed_disk_decks(spec, dir.string());
-  std::printf("sector %ld nodes; assembly %ld nodes, %ld C3D10, %ld clamped, %ld dofs\n",
-              decks.sector_nodes, decks.assembly_nodes, decks.assembly_elements,
-              decks.clamped_nodes, 3 * (decks.assembly_nodes - decks.clamped_nodes));
+  std::filesystem::create_directories(dir);
+  // The build's ccx cache, shared with test_problem (RSI_CCX_CACHE overrides it).
+  ComponentLoadOptions options;
+  const char* cache = std::getenv("RSI_CCX_CACHE");
+  options.ccx_cache = cache && *cache ? cache : RSI_BINARY_DIR "/ccx-cache";
+  const std::filesystem::path deck = component_deck(c, options).source;
+  const auto written = std::filesystem::last_write_time(deck);
+  const Component disk = load_component(c, options);
+  EXPECT_EQ(disk.boundary.size(), 3u * 16u * static_cast<size_t>(spec.sectors))
+      << "the boundary: every blade's 16 tip nodes";
+  std::printf("assembly %d dofs, boundary %zu dofs (deck %s)\n", disk.n_dofs(),
+              disk.boundary.size(), deck.c_str());
+  EXPECT_EQ(component_deck(c, options).source, deck.string()) << "the cache entry moved";
+  EXPECT_EQ(std::filesystem::last_write_time(deck), written) << "a second load meshed again";
+  const std::filesystem::path sector_deck = deck.parent_path() / "sector.inp";
 
   // The sector: ccx's cyclic symmetry, diameters 0 .. N/2.
   const int diameters = spec.sectors / 2 + 1;
   {
-    std::ifstream in(decks.sector);
+    std::ifstream in(sector_deck);
     std::ofstream out(dir / "cyclic.inp");
     out << in.rdbuf() << "*STEP\n*FREQUENCY\n10\n*SELECT CYCLIC SYMMETRY MODES, NMIN=0, NMAX="
         << diameters - 1 << "\n*END STEP\n";
   }
-  const ChildResult r = run_child({"ccx", "-i", "cyclic"}, dir.string(), (dir / "cyclic.log").string());
+  const ChildResult r =
+      run_child({"ccx", "-i", "cyclic"}, dir.string(), (dir / "cyclic.log").string());
   ASSERT_TRUE(r.succeeded() && r.output.find("*ERROR") == std::string::npos) << r.output;
   const std::vector<std::vector<double>> cyclic =
       cyclic_eigenvalues((dir / "cyclic.dat").string(), diameters);
@@ -142,9 +180,6 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
   std::sort(expected.begin(), expected.end());
 
   // The assembly: ccx's K and M, rsi's modes.
-  const CalculixDeck deck = read_calculix_deck(decks.disk);
-  const std::string prefix = calculix_matrices(deck, (dir / "cache").string());
-  const Component disk = read_calculix_component(prefix, deck, {}, "bladed disk");
   const int count = static_cast<int>(expected.size());
   const Modes modes = lowest_modes(disk.stiffness, disk.mass, count);
   int compared = 0;
