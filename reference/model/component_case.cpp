@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <filesystem>
 #include <functional>
+#include <initializer_list>
 
 #include "calculix_deck.hpp"
 #include "calculix_features.hpp"
@@ -66,42 +67,53 @@ int node_id(const ComponentNode& node) {
   return node.id;
 }
 
-/// The blade's parameters: every key optional, the coarse default otherwise
-/// (gmsh_blade.hpp); ranges checked by check_gmsh_blade_spec.
-GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
-  GmshBladeSpec spec;
-  const std::pair<const char*, double*> fields[] = {
-      {"span", &spec.span},
-      {"chord", &spec.chord},
-      {"thickness", &spec.thickness},
-      {"camber", &spec.camber},
-      {"twist_deg", &spec.twist},
-      {"stagger_deg", &spec.stagger},
-      {"root_length", &spec.root_length},
-      {"root_width", &spec.root_width},
-      {"root_height", &spec.root_height},
-      {"root_radius", &spec.root_radius},
-      {"element_size", &spec.element_size},
-      {"young_modulus", &spec.young_modulus},
-      {"poisson_ratio", &spec.poisson_ratio},
-      {"density", &spec.density}};
+/// Each of `fields` present in `object` read as a number (its range is the
+/// spec check's), the others claimed.
+void read_spec_numbers(ObjectReader& r, const json& object,
+                       std::initializer_list<std::pair<const char*, double*>> fields) {
   for (const auto& [key, value] : fields)
     if (object.contains(key))
       *value = r.number(key, {-inf, inf, true, true, "(see data/README.md)"});
     else
       r.claim(key);
+}
+
+/// A spec check's "PREFIX.FIELD: what" failure at the case file's key
+/// (twist and stagger are spelled with _deg there).
+[[noreturn]] void fail_at_spec_key(ObjectReader& r, const std::invalid_argument& e,
+                                   const std::string& prefix) {
+  std::string what = e.what();
+  if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+  const size_t colon = what.find(':');
+  std::string field = what.substr(0, colon);
+  if (field == "twist" || field == "stagger") field += "_deg";
+  r.fail(r.full(field), colon == std::string::npos ? what : what.substr(colon + 2));
+}
+
+/// The blade's parameters: every key optional, the coarse default otherwise
+/// (gmsh_blade.hpp); ranges checked by check_gmsh_blade_spec.
+GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
+  GmshBladeSpec spec;
+  read_spec_numbers(r, object,
+                    {{"span", &spec.span},
+                     {"chord", &spec.chord},
+                     {"thickness", &spec.thickness},
+                     {"camber", &spec.camber},
+                     {"twist_deg", &spec.twist},
+                     {"stagger_deg", &spec.stagger},
+                     {"root_length", &spec.root_length},
+                     {"root_width", &spec.root_width},
+                     {"root_height", &spec.root_height},
+                     {"root_radius", &spec.root_radius},
+                     {"element_size", &spec.element_size},
+                     {"young_modulus", &spec.young_modulus},
+                     {"poisson_ratio", &spec.poisson_ratio},
+                     {"density", &spec.density}});
   r.finish();
   try {
     check_gmsh_blade_spec(spec);
   } catch (const std::invalid_argument& e) {
-    // "GmshBladeSpec.FIELD: ..." -> the key of the case file.
-    std::string what = e.what();
-    const std::string prefix = "GmshBladeSpec.";
-    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
-    const size_t colon = what.find(':');
-    std::string field = what.substr(0, colon);
-    if (field == "twist" || field == "stagger") field += "_deg";
-    r.fail(r.full(field), colon == std::string::npos ? what : what.substr(colon + 2));
+    fail_at_spec_key(r, e, "GmshBladeSpec.");
   }
   return spec;
 }
@@ -113,31 +125,24 @@ GmshBladedDiskSpec read_gmsh_bladed_disk(ObjectReader r, const json& object) {
   GmshBladedDiskSpec spec;
   r.claim("blade");
   if (object.contains("blade")) {
-    if (!object.at("blade").is_object()) r.fail(r.full("blade"), "must be an object of the blade's parameters");
+    if (!object.at("blade").is_object())
+      r.fail(r.full("blade"), "must be an object of the blade's parameters");
     spec.blade = read_gmsh_blade(r.object("blade"), object.at("blade"));
   }
-  if (object.contains("sectors")) spec.sectors = static_cast<int>(r.integer("sectors", 3, 200));
-  else r.claim("sectors");
-  const std::pair<const char*, double*> fields[] = {{"bore_radius", &spec.bore_radius},
-                                                    {"rim_radius", &spec.rim_radius},
-                                                    {"disk_width", &spec.disk_width}};
-  for (const auto& [key, value] : fields)
-    if (object.contains(key))
-      *value = r.number(key, {-inf, inf, true, true, "(see data/README.md)"});
-    else
-      r.claim(key);
+  if (object.contains("sectors"))
+    spec.sectors = static_cast<int>(r.integer("sectors", 3, 200));
+  else
+    r.claim("sectors");
+  read_spec_numbers(r, object,
+                    {{"bore_radius", &spec.bore_radius},
+                     {"rim_radius", &spec.rim_radius},
+                     {"disk_width", &spec.disk_width}});
   r.finish();
   try {
     check_gmsh_bladed_disk_spec(spec);
   } catch (const std::invalid_argument& e) {
-    // "GmshBladedDiskSpec.FIELD: ..." -> the key of the case file (the
-    // blade's own fields were checked by read_gmsh_blade).
-    std::string what = e.what();
-    const std::string prefix = "GmshBladedDiskSpec.";
-    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
-    const size_t colon = what.find(':');
-    r.fail(r.full(what.substr(0, colon)),
-           colon == std::string::npos ? what : what.substr(colon + 2));
+    // The blade's own fields were checked by read_gmsh_blade.
+    fail_at_spec_key(r, e, "GmshBladedDiskSpec.");
   }
   return spec;
 }
