@@ -39,8 +39,7 @@ double blade_polar_angle(const GmshBladeSpec& b) {
   for (const double y : {-b.root_length / 2.0, b.root_length / 2.0})
     for (const double z : {z0, z0 + b.root_width})
       block = std::max(block, std::abs(y * std::cos(turn) - z * std::sin(turn)));
-  const double section =
-      std::hypot(b.chord / 2.0, sagitta + b.thickness / 2.0);
+  const double section = std::hypot(b.chord / 2.0, sagitta + b.thickness / 2.0);
   return std::max(std::atan2(block, b.root_radius),
                   std::atan2(section, b.root_radius + b.root_height));
 }
@@ -73,8 +72,8 @@ std::string coordinate(double x) {
 void write_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes) {
   out << "*NODE, NSET=NALL\n";
   for (const auto& [id, x] : nodes)
-    out << id << ", " << coordinate(x.x()) << ", " << coordinate(x.y()) << ", "
-        << coordinate(x.z()) << "\n";
+    out << id << ", " << coordinate(x.x()) << ", " << coordinate(x.y()) << ", " << coordinate(x.z())
+        << "\n";
 }
 
 void write_elements(std::ostream& out, const std::vector<std::array<long, 11>>& elements) {
@@ -109,12 +108,12 @@ void check_gmsh_bladed_disk_spec(const GmshBladedDiskSpec& spec) {
   std::ostringstream m;
   m.imbue(std::locale::classic());
   if (spec.sectors < 3 || spec.sectors > 200)
-    throw std::invalid_argument(field_error(
-        "sectors", std::to_string(spec.sectors) + " is out of range, allowed [3, 200]"));
+    throw std::invalid_argument(field_error("sectors", std::to_string(spec.sectors) +
+                                                           " is out of range, allowed [3, 200]"));
   const double top = b.root_radius + b.root_height;
   if (!(spec.rim_radius > b.root_radius && spec.rim_radius <= top)) {
-    m << deck_number(spec.rim_radius) << " mm is out of range, allowed (" << deck_number(b.root_radius)
-      << ", " << deck_number(top)
+    m << deck_number(spec.rim_radius) << " mm is out of range, allowed ("
+      << deck_number(b.root_radius) << ", " << deck_number(top)
       << "] mm (the root block's bottom inside the disk, its top outside)";
     throw std::invalid_argument(field_error("rim_radius", m.str()));
   }
@@ -229,7 +228,8 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
 
   const long stride = mesh.nodes.rbegin()->first + 1;
   long element_stride = 1;
-  for (const std::array<long, 11>& e : mesh.elements) element_stride = std::max(element_stride, e[0] + 1);
+  for (const std::array<long, 11>& e : mesh.elements)
+    element_stride = std::max(element_stride, e[0] + 1);
   const int n = spec.sectors;
   // Sector k's number of its node j (a LEFT node is sector k-1's RIGHT node).
   const auto global = [&](int k, long j) {
@@ -248,12 +248,15 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
     for (const std::array<long, 11>& e : mesh.elements) {
       std::array<long, 11> g{};
       g[0] = k * element_stride + e[0];
-      for (int i = 1; i < 11; ++i) g[i] = global(k, e[i]);
+      for (int i = 1; i < 11; ++i)
+        g[i] = global(k, e[i]);
       elements.push_back(g);
     }
-    for (const long j : bore) clamped.insert(global(k, j));
+    for (const long j : bore)
+      clamped.insert(global(k, j));
     std::vector<long> tip_k;
-    for (const long j : tip) tip_k.push_back(global(k, j));
+    for (const long j : tip)
+      tip_k.push_back(global(k, j));
     write_deck_node_set(tips, "TIP" + std::to_string(k + 1), tip_k);
     all_tips.insert(all_tips.end(), tip_k.begin(), tip_k.end());
   }
@@ -275,7 +278,8 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
   std::ostringstream sector;
   sector.imbue(std::locale::classic());
   std::map<long, Eigen::Vector3d> own;
-  for (const long j : meshed.used) own[j] = mesh.nodes.at(j);
+  for (const long j : meshed.used)
+    own[j] = mesh.nodes.at(j);
   const std::set<long> bore_set(bore.begin(), bore.end());
   std::vector<long> dependent;
   for (const long j : left)

@@ -58,8 +58,8 @@ std::string gmsh_bladed_disk_sector_geo(const GmshBladedDiskSpec& spec);
 std::string gmsh_bladed_disk_cache_key(const GmshBladedDiskSpec& spec);
 
 struct GmshBladedDiskDecks {
-  std::string disk;    ///< DIR/disk.inp, the assembly
-  std::string sector;  ///< DIR/sector.inp, one sector with the cyclic tie
+  std::string disk;   ///< DIR/disk.inp, the assembly
+  std::string sector; ///< DIR/sector.inp, one sector with the cyclic tie
   long sector_nodes = 0;
   long assembly_nodes = 0;
   long assembly_elements = 0;

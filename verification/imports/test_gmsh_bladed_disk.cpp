@@ -19,8 +19,8 @@
 //    skipped, saying so.
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -33,8 +33,8 @@
 #include "case_file.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
-#include "gmsh_bladed_disk.hpp"
 #include "gmsh_blade_fit.hpp"
+#include "gmsh_bladed_disk.hpp"
 #include "modal_analysis.hpp"
 
 namespace rsi {
@@ -80,9 +80,9 @@ TEST(GmshBladedDisk, SpecRanges) {
 /// The case file's keys: each bad one named as the file spells it.
 TEST(GmshBladedDisk, CaseFileNamesTheBadKey) {
   const auto refused = [](const std::string& disk, const std::string& key) {
-    const nlohmann::json doc = nlohmann::json::parse(
-        R"({"component": {"name": "d", "source": {"gmsh_bladed_disk": )" + disk +
-        R"(}, "units": "N, mm, t, s"}})");
+    const nlohmann::json doc =
+        nlohmann::json::parse(R"({"component": {"name": "d", "source": {"gmsh_bladed_disk": )" +
+                              disk + R"(}, "units": "N, mm, t, s"}})");
     try {
       parse_component_case(doc, "case.json");
       ADD_FAILURE() << disk << ": accepted";
@@ -160,8 +160,9 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
   {
     std::ifstream in(sector_deck);
     std::ofstream out(dir / "cyclic.inp");
-    out << in.rdbuf() << "*STEP\n*FREQUENCY\n10\n*SELECT CYCLIC SYMMETRY MODES, NMIN=0, NMAX="
-        << diameters - 1 << "\n*END STEP\n";
+    out << in.rdbuf()
+        << "*STEP\n*FREQUENCY\n10\n*SELECT CYCLIC SYMMETRY MODES, NMIN=0, NMAX=" << diameters - 1
+        << "\n*END STEP\n";
   }
   const ChildResult r =
       run_child({"ccx", "-i", "cyclic"}, dir.string(), (dir / "cyclic.log").string());
@@ -175,7 +176,8 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
     complete_below = std::min(complete_below, cyclic[k].back());
     const int multiplicity = (k == 0 || 2 * k == spec.sectors) ? 1 : 2;
     for (double lambda : cyclic[k])
-      for (int m = 0; m < multiplicity; ++m) expected.push_back(lambda);
+      for (int m = 0; m < multiplicity; ++m)
+        expected.push_back(lambda);
   }
   std::sort(expected.begin(), expected.end());
 
