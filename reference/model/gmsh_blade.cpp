@@ -204,6 +204,19 @@ std::string deck_number(double x) {
   return buffer;
 }
 
+void write_deck_file(const std::string& path, const std::string& text, const std::string& who) {
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial);
+    out << text;
+    out.close();
+    if (!out) throw std::runtime_error(who + ": cannot write " + partial);
+  }
+  std::error_code ec;
+  std::filesystem::rename(partial, path, ec);
+  if (ec) throw std::runtime_error(who + ": cannot rename " + partial + ": " + ec.message());
+}
+
 void write_deck_node_set(std::ostream& out, const std::string& name,
                          const std::vector<long>& nodes) {
   out << "*NSET, NSET=" << name << "\n";
@@ -564,17 +577,9 @@ std::string write_gmsh_blade_deck(const GmshBladeSpec& spec, const std::string& 
 
   const std::vector<long> tip = gmsh_blade_tip_nodes(spec, meshed);
 
-  const std::string partial = deck + ".partial"; // renamed when complete
-  {
-    std::ofstream out(partial);
-    write_deck(out, spec, mesh, used, root, tip);
-    out.close();
-    if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + partial);
-  }
-  fs::rename(partial, deck, ec);
-  if (ec)
-    throw std::runtime_error("write_gmsh_blade_deck: cannot rename " + partial + ": " +
-                             ec.message());
+  std::ostringstream text;
+  write_deck(text, spec, mesh, used, root, tip);
+  write_deck_file(deck, text.str(), "write_gmsh_blade_deck");
   return deck;
 }
 

@@ -221,6 +221,9 @@ std::vector<long> gmsh_blade_tip_nodes(const GmshBladeSpec& spec, const GmshMesh
 
 /// A number as the blade's deck writes it (%.15g).
 std::string deck_number(double x);
+/// Writes `text` to PATH through PATH.partial, renamed when complete (no
+/// half-written deck under PATH); std::runtime_error("WHO: cannot ...").
+void write_deck_file(const std::string& path, const std::string& text, const std::string& who);
 /// *NSET, NSET=NAME and the numbers, 8 a line.
 void write_deck_node_set(std::ostream& out, const std::string& name,
                          const std::vector<long>& nodes);

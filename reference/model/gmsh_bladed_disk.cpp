@@ -83,23 +83,6 @@ void write_elements(std::ostream& out, const std::vector<std::array<long, 11>>& 
       out << e[i] << (i < 10 ? ", " : "\n");
 }
 
-/// Writes `text` to PATH through PATH.partial (renamed when complete).
-void write_file(const std::string& path, const std::string& text) {
-  namespace fs = std::filesystem;
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream out(partial);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("write_gmsh_bladed_disk_decks: cannot write " + partial);
-  }
-  std::error_code ec;
-  fs::rename(partial, path, ec);
-  if (ec)
-    throw std::runtime_error("write_gmsh_bladed_disk_decks: cannot rename " + partial + ": " +
-                             ec.message());
-}
-
 } // namespace
 
 void check_gmsh_bladed_disk_spec(const GmshBladedDiskSpec& spec) {
@@ -273,7 +256,7 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
   write_elements(disk, elements);
   write_deck_node_set(disk, "BORE", std::vector<long>(clamped.begin(), clamped.end()));
   disk << tips.str() << material_lines(b);
-  write_file(decks.disk, disk.str());
+  write_deck_file(decks.disk, disk.str(), "write_gmsh_bladed_disk_decks");
 
   std::ostringstream sector;
   sector.imbue(std::locale::classic());
@@ -296,12 +279,8 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
          << "*SURFACE, NAME=SLEFT, TYPE=NODE\nNLEFT\n*SURFACE, NAME=SRIGHT, TYPE=NODE\nNRIGHT\n"
          << "*TIE, NAME=T1, CYCLIC SYMMETRY\nSLEFT, SRIGHT\n*CYCLIC SYMMETRY MODEL, N=" << n
          << ", NGRAPH=1\n0., 0., 0., 0., 0., 1.\n";
-  write_file(decks.sector, sector.str());
+  write_deck_file(decks.sector, sector.str(), "write_gmsh_bladed_disk_decks");
 
-  decks.sector_nodes = static_cast<long>(meshed.used.size());
-  decks.assembly_nodes = static_cast<long>(nodes.size());
-  decks.assembly_elements = static_cast<long>(elements.size());
-  decks.clamped_nodes = static_cast<long>(clamped.size());
   return decks;
 }
 

@@ -60,10 +60,6 @@ std::string gmsh_bladed_disk_cache_key(const GmshBladedDiskSpec& spec);
 struct GmshBladedDiskDecks {
   std::string disk;   ///< DIR/disk.inp, the assembly
   std::string sector; ///< DIR/sector.inp, one sector with the cyclic tie
-  long sector_nodes = 0;
-  long assembly_nodes = 0;
-  long assembly_elements = 0;
-  long clamped_nodes = 0; ///< BORE of the assembly
 };
 
 /// Meshes one sector with gmsh and writes both decks into DIR (created if
