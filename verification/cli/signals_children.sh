@@ -22,10 +22,11 @@
 # unpolled phases are each one call: reading and checking the matrices,
 # the CHOLMOD factorisation of K, one block solve (measured 1.5-21 s under
 # a load of 16 on 2 cores: verification/HARDENING.md; in the sanitizer
-# build alone 0.4-9.6 s, signalled 3-110 s into the run). CTest runs this
-# test alone (RUN_SERIAL, verification/CMakeLists.txt says why); past the
-# limit it prints rsi's stacks when gdb is there. Skipped (exit 77, said)
-# without gmsh or ccx, or without ../shared/external/rotor37.
+# build alone 0.4-9.6 s, signalled 3-110 s into the run). CTest never runs
+# this test beside the MPI tests (RESOURCE_LOCK, verification/CMakeLists.txt
+# says why); past the limit it prints rsi's stacks when gdb is there.
+# Skipped (exit 77, said) without gmsh or ccx, or without
+# ../shared/external/rotor37.
 # Usage: signals_children.sh RSI SOURCE_DIR CCX_CACHE
 set -u
 rsi=$1
