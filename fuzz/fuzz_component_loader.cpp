@@ -93,7 +93,8 @@ void load(const fs::path& folder, const std::string& bytes) {
   if (!inside(folder, c.source_path)) return;
   if (!c.calculix_matrices.empty() && !inside(folder, c.calculix_matrices)) return;
   if (c.source == rsi::ComponentSource::gmsh_blade ||
-      c.source == rsi::ComponentSource::gmsh_bladed_disk)
+      c.source == rsi::ComponentSource::gmsh_bladed_disk ||
+      c.source == rsi::ComponentSource::gmsh_casing)
     return;
   if (c.source == rsi::ComponentSource::calculix_deck) {
     // *INCLUDE names files the harness cannot confine (relative to the

@@ -147,6 +147,31 @@ GmshBladedDiskSpec read_gmsh_bladed_disk(ObjectReader r, const json& object) {
   return spec;
 }
 
+/// The casing's parameters: every key optional, the default otherwise
+/// (gmsh_casing.hpp); ranges checked by check_gmsh_casing_spec.
+GmshCasingSpec read_gmsh_casing(ObjectReader r, const json& object) {
+  GmshCasingSpec spec;
+  if (object.contains("clamped_flanges"))
+    spec.clamped_flanges = static_cast<int>(r.integer("clamped_flanges", 1, 2));
+  else
+    r.claim("clamped_flanges");
+  read_spec_numbers(r, object,
+                    {{"inner_radius", &spec.inner_radius},
+                     {"thickness", &spec.thickness},
+                     {"width", &spec.width},
+                     {"element_size", &spec.element_size},
+                     {"young_modulus", &spec.young_modulus},
+                     {"poisson_ratio", &spec.poisson_ratio},
+                     {"density", &spec.density}});
+  r.finish();
+  try {
+    check_gmsh_casing_spec(spec);
+  } catch (const std::invalid_argument& e) {
+    fail_at_spec_key(r, e, "GmshCasingSpec.");
+  }
+  return spec;
+}
+
 /// `text` with every occurrence of `from` replaced by `to`.
 std::string replace_all(std::string text, const std::string& from, const std::string& to) {
   for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
@@ -224,8 +249,13 @@ std::string cached_gmsh_deck(const std::string& key, const std::string& name,
   return (entry / deck).string();
 }
 
-/// The deck of the case's gmsh model (gmsh_blade or gmsh_bladed_disk).
+/// The deck of the case's gmsh model (gmsh_blade, gmsh_bladed_disk or gmsh_casing).
 std::string gmsh_deck(const ComponentCase& c, const std::string& cache_dir) {
+  if (c.source == ComponentSource::gmsh_casing)
+    return cached_gmsh_deck(
+        gmsh_casing_cache_key(c.gmsh_casing), "gmsh-casing", "casing.inp",
+        [&](const std::string& dir) { write_gmsh_casing_deck(c.gmsh_casing, dir); },
+        "component.source.gmsh_casing", cache_dir, c.case_path);
   if (c.source == ComponentSource::gmsh_blade)
     return cached_gmsh_deck(
         gmsh_blade_cache_key(c.gmsh_blade), "gmsh-blade", "blade.inp",
@@ -478,6 +508,10 @@ std::string source_key(const ComponentCase& c, const ComponentLoadOptions& optio
     return material ? "keys 'component.source.gmsh_bladed_disk.blade.young_modulus' and "
                       "'component.source.gmsh_bladed_disk.blade.density'"
                     : "key 'component.source.gmsh_bladed_disk'";
+  case ComponentSource::gmsh_casing:
+    return material ? "keys 'component.source.gmsh_casing.young_modulus' and "
+                      "'component.source.gmsh_casing.density'"
+                    : "key 'component.source.gmsh_casing'";
   case ComponentSource::calculix_deck:
     break;
   }
@@ -552,11 +586,13 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   const bool folder = sj.is_object() && sj.size() == 1 && sj.contains("matrix_market");
   const bool blade = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_blade");
   const bool disk = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_bladed_disk");
-  if (!deck && !folder && !blade && !disk)
+  const bool casing = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_casing");
+  if (!deck && !folder && !blade && !disk && !casing)
     comp.fail(comp.full("source"), "must be {\"calculix_deck\": file[, \"calculix_matrices\": "
                                    "\"dir/JOB\"]}, {\"matrix_market\": folder}, "
-                                   "{\"gmsh_blade\": {parameters}} or "
-                                   "{\"gmsh_bladed_disk\": {parameters}}, got " +
+                                   "{\"gmsh_blade\": {parameters}}, "
+                                   "{\"gmsh_bladed_disk\": {parameters}} or "
+                                   "{\"gmsh_casing\": {parameters}}, got " +
                                        sj.dump().substr(0, 80));
   if (deck) {
     c.source = ComponentSource::calculix_deck;
@@ -569,6 +605,11 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   } else if (blade) {
     c.source = ComponentSource::gmsh_blade;
     c.gmsh_blade = read_gmsh_blade(source.object("gmsh_blade"), sj.at("gmsh_blade"));
+  } else if (casing) {
+    if (!sj.at("gmsh_casing").is_object())
+      source.fail(source.full("gmsh_casing"), "must be an object of the casing's parameters");
+    c.source = ComponentSource::gmsh_casing;
+    c.gmsh_casing = read_gmsh_casing(source.object("gmsh_casing"), sj.at("gmsh_casing"));
   } else {
     if (!sj.at("gmsh_bladed_disk").is_object())
       source.fail(source.full("gmsh_bladed_disk"), "must be an object of the disk's parameters");
@@ -601,6 +642,8 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   } else if (c.source == ComponentSource::gmsh_blade ||
              c.source == ComponentSource::gmsh_bladed_disk) {
     c.boundary_node_set = "TIP";
+  } else if (c.source == ComponentSource::gmsh_casing) {
+    c.boundary_node_set = "INNER";
   } else {
     comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
   }
@@ -624,6 +667,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
       comp.fail(comp.full("rotation_effects"),
                 "needs a calculix_deck or gmsh_blade source (ccx runs the deck under the "
                 "centrifugal load), the source is a Matrix Market folder");
+    if (c.rotation_effects && c.source == ComponentSource::gmsh_casing)
+      comp.fail(comp.full("rotation_effects"),
+                "the casing is the stator: it does not turn, and has no rotation effects");
     if (c.rotation_effects && !c.calculix_matrices.empty())
       comp.fail(comp.full("rotation_effects"),
                 "needs ccx to run the deck under the centrifugal load, and "
@@ -717,11 +763,14 @@ ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions&
                     "drop " +
                     options.source_named() + ", or run it on a case without calculix_matrices");
   const bool gmsh = c.source == ComponentSource::gmsh_blade ||
-                    c.source == ComponentSource::gmsh_bladed_disk;
+                    c.source == ComponentSource::gmsh_bladed_disk ||
+                    c.source == ComponentSource::gmsh_casing;
+  const char* model = c.source == ComponentSource::gmsh_blade    ? "blade"
+                      : c.source == ComponentSource::gmsh_casing ? "casing"
+                                                                 : "bladed-disk";
   if (!options.source_override.empty() && gmsh)
     throw CaseError(c.case_path + ": " + source_key(c, ComponentLoadOptions{}, false) +
-                    ": the case builds its " +
-                    (c.source == ComponentSource::gmsh_blade ? "blade" : "bladed-disk") +
+                    ": the case builds its " + model +
                     " deck from these parameters, and " +
                     options.source_named() + " names " + options.source_override + ": " +
                     options.source_named() +

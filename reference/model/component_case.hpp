@@ -13,7 +13,9 @@
 //                   project's blade (gmsh_blade.hpp), meshed by gmsh into the ccx cache,
 //                   boundary by default its node set TIP; or {"gmsh_bladed_disk":
 //                   {"sectors": N, ..., "blade": {parameters}}}: N such blades on a disk
-//                   (gmsh_bladed_disk.hpp), boundary by default every blade's TIP)
+//                   (gmsh_bladed_disk.hpp), boundary by default every blade's TIP; or
+//                   {"gmsh_casing": {parameters}}: the flexible ring (gmsh_casing.hpp),
+//                   boundary by default its inner face, node set INNER)
 //                  "boundary": {"nodes": [188, 190, ...]},
 //                  "units": "N, mm, t, s", "rotation_axis": [0, 0, 1]},
 //    "modal_campaign": {"methods": ["cb", "ccm", "macneal"], "modes": [10, 20, 50],
@@ -44,10 +46,17 @@
 #include "component.hpp"
 #include "gmsh_blade.hpp"
 #include "gmsh_bladed_disk.hpp"
+#include "gmsh_casing.hpp"
 
 namespace rsi {
 
-enum class ComponentSource { calculix_deck, matrix_market, gmsh_blade, gmsh_bladed_disk };
+enum class ComponentSource {
+  calculix_deck,
+  matrix_market,
+  gmsh_blade,
+  gmsh_bladed_disk,
+  gmsh_casing
+};
 
 struct ModalCampaign {
   std::vector<std::string> methods; ///< "cb", "ccm", "macneal"
@@ -152,6 +161,7 @@ struct ComponentCase {
   bool boundary_from_dofs = false;         ///< matrix_market: dofs.csv's flags
   GmshBladeSpec gmsh_blade;                ///< gmsh_blade: the blade's parameters
   GmshBladedDiskSpec gmsh_bladed_disk;     ///< gmsh_bladed_disk: the disk's and its blade's
+  GmshCasingSpec gmsh_casing;              ///< gmsh_casing: the ring's parameters
   std::string units;
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;

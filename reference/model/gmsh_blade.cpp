@@ -217,6 +217,25 @@ void write_deck_file(const std::string& path, const std::string& text, const std
   if (ec) throw std::runtime_error(who + ": cannot rename " + partial + ": " + ec.message());
 }
 
+void write_deck_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes) {
+  const auto coordinate = [](double x) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.12e", x);
+    return std::string(buffer);
+  };
+  out << "*NODE, NSET=NALL\n";
+  for (const auto& [id, x] : nodes)
+    out << id << ", " << coordinate(x.x()) << ", " << coordinate(x.y()) << ", " << coordinate(x.z())
+        << "\n";
+}
+
+void write_deck_c3d10(std::ostream& out, const std::vector<std::array<long, 11>>& elements) {
+  out << "*ELEMENT, TYPE=C3D10, ELSET=EALL\n";
+  for (const std::array<long, 11>& e : elements)
+    for (int i = 0; i < 11; ++i)
+      out << e[i] << (i < 10 ? ", " : "\n");
+}
+
 void write_deck_node_set(std::ostream& out, const std::string& name,
                          const std::vector<long>& nodes) {
   out << "*NSET, NSET=" << name << "\n";
@@ -380,7 +399,14 @@ std::string gmsh_blade_geo(const GmshBladeSpec& spec, const GmshGeoAddition& add
   }
   g << "Point{station()} In Surface{tip(0)};\n"
     << "Physical Volume(\"BLADE\") = {v()};\n"
-    << "Mesh.MeshSizeMax = " << number(spec.element_size) << ";\n"
+    << gmsh_mesh_options(spec.element_size);
+  return stream_text(g);
+}
+
+std::string gmsh_mesh_options(double element_size) {
+  std::ostringstream g;
+  g.imbue(std::locale::classic());
+  g << "Mesh.MeshSizeMax = " << number(element_size) << ";\n"
     << "Mesh.ElementOrder = 2;\n"
     << "Mesh.SecondOrderLinear = 1;\n"
     << "Mesh.Optimize = 1;\n"
@@ -503,15 +529,15 @@ std::string gmsh_blade_cache_key(const GmshBladeSpec& spec) {
   return gmsh_blade_geo(spec) + "// deck writer 2\n" + material_and_clamping(spec);
 }
 
-GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir,
-                                 double tol) {
+GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir, double tol,
+                                 const std::string& stem) {
   namespace fs = std::filesystem;
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec)
     throw std::runtime_error("write_gmsh_blade_deck: cannot create " + dir + ": " + ec.message());
-  const std::string geo = dir + "/blade.geo";
-  const std::string gmsh_mesh = dir + "/blade_gmsh.inp";
+  const std::string geo = dir + "/" + stem + ".geo";
+  const std::string gmsh_mesh = dir + "/" + stem + "_gmsh.inp";
   fs::remove(gmsh_mesh, ec); // never read a previous run's files
   {
     std::ofstream out(geo);
@@ -519,8 +545,8 @@ GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string&
     if (!out) throw std::runtime_error("write_gmsh_blade_deck: cannot write " + geo);
   }
   GmshMeshOutcome outcome;
-  outcome.command = {"gmsh", "blade.geo",      "-3",      "-format", "inp",
-                     "-o",   "blade_gmsh.inp", "-nopopup"};
+  outcome.command = {"gmsh", stem + ".geo", "-3", "-format", "inp", "-o", stem + "_gmsh.inp",
+                     "-nopopup"};
   outcome.where = " (in " + dir + ", output in " + dir + "/gmsh.log)";
   run_gmsh(outcome.command, dir, outcome.where);
   outcome.mesh = read_gmsh_inp(gmsh_mesh);

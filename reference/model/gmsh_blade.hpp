@@ -190,6 +190,12 @@ struct GmshGeoAddition {
 };
 std::string gmsh_blade_geo(const GmshBladeSpec& spec, const GmshGeoAddition& addition);
 
+/// The mesh options every rsi gmsh script ends with: quadratic tetrahedra
+/// with straight edges of at most `element_size` [mm], and gmsh 4.8's
+/// defaults of the other options written out (a user's ~/.gmsh-options
+/// cannot change the mesh).
+std::string gmsh_mesh_options(double element_size);
+
 /// Mesh as gmsh wrote it (Abaqus format): nodes by number, C3D10 elements.
 struct GmshMesh {
   std::map<long, Eigen::Vector3d> nodes;
@@ -206,13 +212,13 @@ struct GmshMeshOutcome {
   GmshError failure(const std::string& what) const;
 };
 
-/// Writes `geo_text` to DIR/blade.geo, runs gmsh (DIR/blade_gmsh.inp) and
+/// Writes `geo_text` to DIR/STEM.geo, runs gmsh (DIR/STEM_gmsh.inp) and
 /// reads and checks its C3D10 mesh: nodes present, corners positively
 /// oriented, midside nodes the Abaqus edge midpoints to `tol` [mm]. Throws
 /// GmshError (gmsh missing or failing, no element, a bad element) or
 /// std::runtime_error (a file not written).
-GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir,
-                                 double tol);
+GmshMeshOutcome mesh_gmsh_script(const std::string& geo_text, const std::string& dir, double tol,
+                                 const std::string& stem = "blade");
 
 /// The mesh node at each of the n_tip_stations tip stations, in their
 /// order; throws meshed.failure(...) naming a station with no node within
@@ -224,6 +230,12 @@ std::string deck_number(double x);
 /// Writes `text` to PATH through PATH.partial, renamed when complete (no
 /// half-written deck under PATH); std::runtime_error("WHO: cannot ...").
 void write_deck_file(const std::string& path, const std::string& text, const std::string& who);
+/// *NODE, NSET=NALL with the coordinates in %.12e (19 characters at most,
+/// of the 20 ccx reads of a field: a turned copy's rounding, e.g. -2.3e-13
+/// for a 0, would take 21 in %.15g).
+void write_deck_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes);
+/// *ELEMENT, TYPE=C3D10, ELSET=EALL and the elements (number, 10 nodes).
+void write_deck_c3d10(std::ostream& out, const std::vector<std::array<long, 11>>& elements);
 /// *NSET, NSET=NAME and the numbers, 8 a line.
 void write_deck_node_set(std::ostream& out, const std::string& name,
                          const std::vector<long>& nodes);

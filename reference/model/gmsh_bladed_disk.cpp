@@ -60,29 +60,6 @@ std::string material_lines(const GmshBladeSpec& b) {
          "\n*SOLID SECTION, ELSET=EALL, MATERIAL=DISK_MATERIAL\n*BOUNDARY\nBORE, 1, 3\n";
 }
 
-/// A coordinate in the 20 characters ccx reads of a *NODE field: %.12e
-/// (19 at most; a turned copy's rounding, e.g. -2.3e-13 for a 0, would take
-/// 21 in %.15g).
-std::string coordinate(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.12e", x);
-  return buffer;
-}
-
-void write_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes) {
-  out << "*NODE, NSET=NALL\n";
-  for (const auto& [id, x] : nodes)
-    out << id << ", " << coordinate(x.x()) << ", " << coordinate(x.y()) << ", " << coordinate(x.z())
-        << "\n";
-}
-
-void write_elements(std::ostream& out, const std::vector<std::array<long, 11>>& elements) {
-  out << "*ELEMENT, TYPE=C3D10, ELSET=EALL\n";
-  for (const std::array<long, 11>& e : elements)
-    for (int i = 0; i < 11; ++i)
-      out << e[i] << (i < 10 ? ", " : "\n");
-}
-
 } // namespace
 
 void check_gmsh_bladed_disk_spec(const GmshBladedDiskSpec& spec) {
@@ -252,8 +229,8 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
        << "** " << nodes.size() << " nodes, " << elements.size() << " C3D10, " << clamped.size()
        << " clamped (NSET BORE), contact nodes NSET TIP1 .. TIP" << n
        << " (all in TIP, blade by blade). Model only.\n";
-  write_nodes(disk, nodes);
-  write_elements(disk, elements);
+  write_deck_nodes(disk, nodes);
+  write_deck_c3d10(disk, elements);
   write_deck_node_set(disk, "BORE", std::vector<long>(clamped.begin(), clamped.end()));
   disk << tips.str() << material_lines(b);
   write_deck_file(decks.disk, disk.str(), "write_gmsh_bladed_disk_decks");
@@ -269,8 +246,8 @@ GmshBladedDiskDecks write_gmsh_bladed_disk_decks(const GmshBladedDiskSpec& spec,
     if (!bore_set.count(j)) dependent.push_back(j); // ccx: no MPC on a clamped node
   sector << "** rsi gmsh_bladed_disk: one sector of " << n
          << " with ccx's cyclic symmetry tie (docs/ccx-cyclic-symmetry.md). Model only.\n";
-  write_nodes(sector, own);
-  write_elements(sector, mesh.elements);
+  write_deck_nodes(sector, own);
+  write_deck_c3d10(sector, mesh.elements);
   write_deck_node_set(sector, "BORE", bore);
   write_deck_node_set(sector, "NLEFT", dependent);
   write_deck_node_set(sector, "NRIGHT", right);

@@ -325,6 +325,16 @@ for key, value in DISK_VALUES.items():
     full = "component.source.gmsh_bladed_disk." + key
     WALK[full] = (DISK, "export", [with_value(full, value)])
 WALK["component.source.gmsh_bladed_disk"] = (DISK, "export", [replace_source({"calculix_deck": os.path.join(WORK, "brick.inp")}, {"node_set": "TIP"})])
+# The casing: the CI ring made coarser (element size 30 mm).
+CASING = json.load(open(os.path.join(SRC, "data/cases/casing3d-ci.json")))
+CASING["component"]["source"]["gmsh_casing"]["element_size"] = 30.0
+CASING_VALUES = {"inner_radius": 280.0, "thickness": 6.0, "width": 50.0, "element_size": 25.0,
+                 "clamped_flanges": 2, "young_modulus": 200000.0, "poisson_ratio": 0.25,
+                 "density": 8.0e-9}
+for key, value in CASING_VALUES.items():
+    full = "component.source.gmsh_casing." + key
+    WALK[full] = (CASING, "export", [with_value(full, value)])
+WALK["component.source.gmsh_casing"] = (CASING, "export", [replace_source({"calculix_deck": os.path.join(WORK, "brick.inp")}, {"node_set": "TIP"})])
 
 
 def documented_keys():

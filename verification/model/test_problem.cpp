@@ -50,7 +50,8 @@ int paper_dofs(int n_blades, int n_blade_elements, int n_casing_elements) {
 /// Why a component case cannot load here (a tool or the external model
 /// absent), or empty.
 std::string component_missing(const std::string& name) {
-  const bool gmsh_blade = name.rfind("blade3d", 0) == 0 || name.rfind("bladed-disk3d", 0) == 0;
+  const bool gmsh_blade = name.rfind("blade3d", 0) == 0 || name.rfind("bladed-disk3d", 0) == 0 ||
+                          name.rfind("casing3d", 0) == 0;
   if (gmsh_blade && !executable_on_path("gmsh")) return "gmsh is not on PATH (Debian package gmsh)";
   if (!gmsh_blade && !fs::exists(RSI_SOURCE_DIR "/../shared/external/rotor37/blade.inp"))
     return "the external Rotor 37 model (shared/external/rotor37/blade.inp) is absent";
@@ -268,6 +269,15 @@ TEST(Problem, GmshBladedDiskCase) {
   expect_component("bladed-disk3d-ci.json", {29484, 0, 0, 0.0, 0.0, 1.0, false});
 }
 
+// The flexible 3D casing's CI model: a ring at element size 15 clamped at its
+// front flange, 21,777 dofs (test_gmsh_casing checks its modes against ccx's
+// Lanczos), no rubbing yet.
+TEST(Problem, GmshCasingCase) {
+  if (const std::string why = component_missing("casing3d"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  expect_component("casing3d-ci.json", {21777, 0, 0, 0.0, 0.0, 1.0, false});
+}
+
 // Rotor 37 (shared/external/rotor37/README.md): 61,098 dofs, 16 contact
 // nodes, response node 1353 direction 2, mu 0.15, NLstep's set-up with the
 // tip sliding against the rotation (tip_sliding: against_rotation).
@@ -307,7 +317,7 @@ TEST(Problem, EveryCaseFileIsCovered) {
       {"batailly2007-72el.json", "paper"},   {"blade3d.json", "component"},
       {"blade3d-rubbing.json", "component"}, {"blade3d-rubbing-rotating.json", "component"},
       {"blade3d-rubbing-liner.json", "component"},
-      {"bladed-disk3d-ci.json", "component"},
+      {"bladed-disk3d-ci.json", "component"}, {"casing3d-ci.json", "component"},
       {"rotor37.json", "component"},
       {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"},
       {"rotor37-rubbing-liner.json", "component"}};
