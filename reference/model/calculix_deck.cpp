@@ -297,6 +297,53 @@ void read_nset_block(const std::vector<Line>& lines, size_t& k, int largest,
   nsets[name] = std::move(set);
 }
 
+/// A *ELEMENT block of type C3D10: its elements, each id and 10 nodes,
+/// continued on the next line when a line holds fewer (ccx reads on).
+void read_tetrahedron_block(const std::vector<Line>& lines, size_t& k,
+                            std::vector<DeckTetrahedron>& tetrahedra) {
+  DeckTetrahedron e;
+  int have = -1; // fields of the current element read: -1 before its id
+  for (++k; k < lines.size() && !lines[k].text.keyword(); ++k) {
+    for (const std::string& field : fields_of(lines[k], "*ELEMENT")) {
+      if (field.empty()) continue;
+      const std::int64_t value = integer_field(field, lines[k], "*ELEMENT, TYPE=C3D10: an id");
+      if (value < 1 || value > 2147483647)
+        fail(lines[k].where, "*ELEMENT, TYPE=C3D10: id " + std::to_string(value) +
+                                 " (ids are integers in [1, 2147483647])");
+      if (have < 0) e.id = static_cast<int>(value);
+      else e.nodes[static_cast<size_t>(have)] = static_cast<int>(value);
+      if (++have == 10) {
+        tetrahedra.push_back(e);
+        have = -1;
+      }
+    }
+  }
+  if (have >= 0)
+    fail(lines[k - 1].where, "*ELEMENT, TYPE=C3D10: element " + std::to_string(e.id) + " has " +
+                                 std::to_string(have) + " nodes, 10 needed");
+}
+
+/// A *SURFACE block of TYPE=ELEMENT (the default): lines "element, Sk".
+void read_element_surface_block(const std::vector<Line>& lines, size_t& k,
+                                const std::string& name, CalculixDeck& deck) {
+  std::vector<DeckElementFace>& faces = deck.element_surfaces[name];
+  for (++k; k < lines.size() && !lines[k].text.keyword(); ++k) {
+    // ccx is the judge of the deck: a line this reader does not take
+    // (an elset, a shell's SPOS, an edge) is noted, and refused only by
+    // the contact surface that would need it.
+    const std::optional<std::vector<std::string>> f = calculix_fields(lines[k].text.upper);
+    const std::optional<std::int64_t> element =
+        f && f->size() >= 2 ? fortran_integer((*f)[0]) : std::nullopt;
+    const std::string label = f && f->size() >= 2 ? (*f)[1] : "";
+    const int face = label.size() == 2 && label[0] == 'S' ? label[1] - '0' : 0;
+    if (!element || *element < 1 || *element > 2147483647 || face < 1 || face > 6) {
+      deck.surfaces_not_read.emplace(name, lines[k].where.text());
+      continue;
+    }
+    faces.push_back({static_cast<int>(*element), face});
+  }
+}
+
 void note(std::vector<DeckKeyword>& list, const std::string& name, const Where& where) {
   if (std::none_of(list.begin(), list.end(),
                    [&](const DeckKeyword& k) { return k.name == name; }))
@@ -349,6 +396,22 @@ CalculixDeck read_calculix_deck(const std::string& path) {
   }
   for (const auto& [id, x] : nodes)
     deck.nodes.push_back({id, x});
+
+  // The C3D10 elements and the element surfaces, for contact surfaces.
+  for (size_t k = 0; k < lines.size();) {
+    const std::string& u = lines[k].text.upper;
+    const auto fields = lines[k].text.keyword() ? calculix_fields(u) : std::nullopt;
+    if (fields && is_element_keyword(u) && parameter(*fields, "TYPE") == "C3D10") {
+      read_tetrahedron_block(lines, k, deck.tetrahedra);
+    } else if (fields && fields->front() == "*SURFACE" &&
+               parameter(*fields, "TYPE").value_or("ELEMENT") == "ELEMENT") {
+      const std::optional<std::string> name = parameter(*fields, "NAME");
+      if (!name || name->empty()) fail(lines[k].where, "*SURFACE without NAME=name");
+      read_element_surface_block(lines, k, *name, deck);
+    } else {
+      ++k;
+    }
+  }
   return deck;
 }
 

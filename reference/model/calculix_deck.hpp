@@ -38,6 +38,7 @@
 // (*NODE but not *NODE PRINT, *NODE FILE, *NODE OUTPUT; *ELEMENT but not
 // *ELEMENT OUTPUT); "**" lines are comments; *HEADING's lines are text.
 
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -50,6 +51,20 @@ namespace rsi {
 struct DeckKeyword {
   std::string name;  ///< upper case, blanks removed, without '*' (e.g. "CONTACTPAIR")
   std::string where; ///< "file:line"
+};
+
+/// A quadratic tetrahedron (C3D10) as the deck lists it: corners 1-4, then
+/// the midside nodes of edges 1-2, 2-3, 3-1, 1-4, 2-4, 3-4 (ccx's order).
+struct DeckTetrahedron {
+  int id = 0;
+  std::array<int, 10> nodes{};
+};
+
+/// One face of an element surface (*SURFACE, TYPE=ELEMENT): the element and
+/// its face label S1 .. S4 as 1 .. 4.
+struct DeckElementFace {
+  int element = 0;
+  int face = 0;
 };
 
 struct CalculixDeck {
@@ -68,6 +83,16 @@ struct CalculixDeck {
   /// once each (upper case): the elements that carry a material and so a
   /// mass, which a centrifugal load (*DLOAD ... CENTRIF) must name.
   std::vector<DeckKeyword> section_elsets;
+  /// The C3D10 elements, in the deck's order (other types are not kept:
+  /// their faces are not read).
+  std::vector<DeckTetrahedron> tetrahedra;
+  /// *SURFACE, TYPE=ELEMENT (the default type), by upper-case name: the
+  /// faces its lines list as "element id, S1 .. S6". A line of another
+  /// form (an *ELSET name, a shell's SPOS, an edge) is not read: the
+  /// first such line of each surface is in `surfaces_not_read` (the
+  /// contact surface refuses such a surface, saying where).
+  std::map<std::string, std::vector<DeckElementFace>> element_surfaces;
+  std::map<std::string, std::string> surfaces_not_read; ///< surface -> "file:line"
 };
 
 CalculixDeck read_calculix_deck(const std::string& path);

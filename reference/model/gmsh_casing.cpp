@@ -6,11 +6,14 @@
 #include <limits>
 #include <locale>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "casing_surface.hpp"
 
 namespace rsi {
 namespace {
@@ -101,7 +104,7 @@ std::string gmsh_casing_geo(const GmshCasingSpec& s) {
 std::string gmsh_casing_cache_key(const GmshCasingSpec& spec) {
   // The version names the deck writer: a change to what it writes from the
   // same mesh must change it.
-  return gmsh_casing_geo(spec) + "// casing deck writer 1\n" + material_lines(spec);
+  return gmsh_casing_geo(spec) + "// casing deck writer 2\n" + material_lines(spec);
 }
 
 std::string write_gmsh_casing_deck(const GmshCasingSpec& spec, const std::string& dir) {
@@ -111,7 +114,8 @@ std::string write_gmsh_casing_deck(const GmshCasingSpec& spec, const std::string
   std::filesystem::remove(deck, ec);
   const double tol = 1e-9 * (spec.inner_radius + spec.thickness + spec.width);
   const GmshMeshOutcome meshed = mesh_gmsh_script(geo, dir, tol, "casing");
-  std::vector<long> flange, inner;
+  std::vector<long> flange;
+  std::set<long> clamped;
   int front = 0, back = 0;
   for (const long id : meshed.used) {
     const Eigen::Vector3d& x = meshed.mesh.nodes.at(id);
@@ -119,24 +123,45 @@ std::string write_gmsh_casing_deck(const GmshCasingSpec& spec, const std::string
     const bool at_back = std::abs(x.z() - spec.width / 2.0) <= tol;
     front += at_front;
     back += at_back;
-    if (at_front || (at_back && spec.clamped_flanges == 2))
+    if (at_front || (at_back && spec.clamped_flanges == 2)) {
       flange.push_back(id);
-    else if (std::abs(std::hypot(x.x(), x.y()) - spec.inner_radius) <= tol)
-      inner.push_back(id); // a clamped node has no dof to be a boundary dof
+      clamped.insert(id);
+    }
   }
   if (front < 3 || back < 3)
     throw meshed.failure("has " + std::to_string(front) + " nodes on the flange z = -width/2 and " +
                          std::to_string(back) + " on z = +width/2 (3 at least each)");
+  // The inner surface: the faces whose three corners lie on r = inner_radius
+  // (their midside nodes lie on the chords, inside it), as an element surface.
+  const auto on_inner = [&](long id) {
+    const Eigen::Vector3d& x = meshed.mesh.nodes.at(id);
+    return std::abs(std::hypot(x.x(), x.y()) - spec.inner_radius) <= tol;
+  };
+  std::ostringstream faces;
+  std::set<long> inner_set;
+  int n_faces = 0;
+  for (const std::array<long, 11>& e : meshed.mesh.elements)
+    for (int face = 1; face <= 4; ++face) {
+      const std::array<int, 6> local = c3d10_face_nodes(face);
+      if (!(on_inner(e[1 + local[0]]) && on_inner(e[1 + local[1]]) && on_inner(e[1 + local[2]])))
+        continue;
+      faces << e[0] << ", S" << face << "\n";
+      ++n_faces;
+      for (const int i : local)
+        if (!clamped.count(e[1 + i])) inner_set.insert(e[1 + i]); // clamped: no dof
+    }
+  const std::vector<long> inner(inner_set.begin(), inner_set.end());
   if (inner.empty())
-    throw meshed.failure("has no node on the inner face r = inner_radius off the flanges");
+    throw meshed.failure("has no element face on the inner face r = inner_radius off the flanges");
 
   std::ostringstream out;
   out.imbue(std::locale::classic());
   out << "** rsi gmsh_casing (reference/model/gmsh_casing.hpp): the ring of casing.geo beside "
          "this deck.\n"
       << "** " << meshed.used.size() << " nodes, " << meshed.mesh.elements.size() << " C3D10, "
-      << flange.size() << " clamped (NSET FLANGE), " << inner.size()
-      << " on the inner face (NSET INNER). Model only.\n";
+      << flange.size() << " clamped (NSET FLANGE), " << n_faces
+      << " faces on the inner face (SURFACE SINNER), their " << inner.size()
+      << " nodes off the flanges (NSET INNER). Model only.\n";
   std::map<long, Eigen::Vector3d> nodes;
   for (const long id : meshed.used)
     nodes[id] = meshed.mesh.nodes.at(id);
@@ -144,7 +169,7 @@ std::string write_gmsh_casing_deck(const GmshCasingSpec& spec, const std::string
   write_deck_c3d10(out, meshed.mesh.elements);
   write_deck_node_set(out, "FLANGE", flange);
   write_deck_node_set(out, "INNER", inner);
-  out << material_lines(spec);
+  out << "*SURFACE, NAME=SINNER, TYPE=ELEMENT\n" << faces.str() << material_lines(spec);
   write_deck_file(deck, out.str(), "write_gmsh_casing_deck");
   return deck;
 }

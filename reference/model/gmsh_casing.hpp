@@ -10,8 +10,10 @@
 // ones (NSET FLANGE) are the front one (clamped_flanges = 1: the casing
 // bolted to its neighbour at one end, its other end free to ovalise, as the
 // 2D ring clamped at one node, SPEC §2) or both (2). The contact surface is
-// the inner face r = inner_radius (NSET INNER, its mesh nodes off the
-// clamped flanges). The mesh: the blade's options (gmsh_mesh_options),
+// the inner face r = inner_radius: the element faces whose corners lie on
+// it (*SURFACE SINNER, TYPE=ELEMENT: casing_surface.hpp reads it), their
+// midside nodes on the chords; NSET INNER holds those faces' nodes off the
+// clamped flanges. The mesh: the blade's options (gmsh_mesh_options),
 // element_size the largest edge.
 //
 // Measured (rsi modes, ccx's matrices), a steel ring of inner radius 272
@@ -27,8 +29,8 @@
 //
 // Files written into DIR: casing.geo (the gmsh script), casing_gmsh.inp
 // (gmsh's mesh), gmsh.log and casing.inp (the deck: *NODE, *ELEMENT
-// TYPE=C3D10 ELSET=EALL, *NSET FLANGE and INNER, *MATERIAL, *SOLID SECTION,
-// *BOUNDARY FLANGE 1-3; model only, no *STEP). Node and element numbers are
+// TYPE=C3D10 ELSET=EALL, *NSET FLANGE and INNER, *SURFACE SINNER,
+// *MATERIAL, *SOLID SECTION, *BOUNDARY FLANGE 1-3; model only, no *STEP). Node and element numbers are
 // gmsh's.
 
 #include <string>

@@ -14,10 +14,13 @@
 //    (rsi's checked residuals 1e-10; ccx's ARPACK converged to machine
 //    precision). Without gmsh or ccx: skipped, saying so.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,6 +30,7 @@
 #include "calculix_deck.hpp"
 #include "calculix_run.hpp"
 #include "case_file.hpp"
+#include "casing_surface.hpp"
 #include "component_case.hpp"
 #include "gmsh_blade_fit.hpp"
 #include "gmsh_casing.hpp"
@@ -111,21 +115,32 @@ TEST(GmshCasing, CaseFileNamesTheBadKey) {
   EXPECT_EQ(c.boundary_node_set, "INNER");
 }
 
-TEST(GmshCasing, LowestModesAgainstCcxLanczos) {
-  const std::string missing = testing::missing_programs({"gmsh", "ccx"});
-  if (!missing.empty()) {
-    std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());
-    GTEST_SKIP() << missing << " not on PATH";
-  }
+/// The CI model's case and its load options (the build's ccx cache, shared
+/// with test_problem; RSI_CCX_CACHE overrides it).
+ComponentCase ci_case() {
   const std::string case_path = std::string(RSI_SOURCE_DIR) + "/data/cases/casing3d-ci.json";
-  const ComponentCase c = parse_component_case(read_case_document(case_path), case_path);
-  ASSERT_EQ(c.source, ComponentSource::gmsh_casing);
-  const GmshCasingSpec& spec = c.gmsh_casing;
-  ASSERT_EQ(spec.clamped_flanges, 1);
-  // The build's ccx cache, shared with test_problem (RSI_CCX_CACHE overrides it).
+  return parse_component_case(read_case_document(case_path), case_path);
+}
+ComponentLoadOptions ci_options() {
   ComponentLoadOptions options;
   const char* cache = std::getenv("RSI_CCX_CACHE");
   options.ccx_cache = cache && *cache ? cache : RSI_BINARY_DIR "/ccx-cache";
+  return options;
+}
+
+#define SKIP_WITHOUT_GMSH_CCX()                                                                    \
+  if (const std::string missing = testing::missing_programs({"gmsh", "ccx"}); !missing.empty()) {  \
+    std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());         \
+    GTEST_SKIP() << missing << " not on PATH";                                                     \
+  }
+
+TEST(GmshCasing, LowestModesAgainstCcxLanczos) {
+  SKIP_WITHOUT_GMSH_CCX();
+  const ComponentCase c = ci_case();
+  ASSERT_EQ(c.source, ComponentSource::gmsh_casing);
+  const GmshCasingSpec& spec = c.gmsh_casing;
+  ASSERT_EQ(spec.clamped_flanges, 1);
+  const ComponentLoadOptions options = ci_options();
   const ComponentDeck deck = component_deck(c, options);
 
   // The sets where the geometry puts them (to 1e-9 of the model's size).
@@ -139,11 +154,9 @@ TEST(GmshCasing, LowestModesAgainstCcxLanczos) {
     at[node.id] = node.x;
   for (const int id : flange)
     EXPECT_NEAR(at.at(id).z(), -spec.width / 2.0, tol) << "FLANGE node " << id;
-  for (const int id : inner) {
-    EXPECT_NEAR(std::hypot(at.at(id).x(), at.at(id).y()), spec.inner_radius, tol)
-        << "INNER node " << id;
+  // INNER: off the clamped flange (its nodes are SINNER's faces', below).
+  for (const int id : inner)
     EXPECT_GT(at.at(id).z(), -spec.width / 2.0 + tol) << "INNER node " << id << " is clamped";
-  }
   EXPECT_EQ(deck.boundary, inner) << "the boundary: the inner face's nodes";
 
   const Component casing = load_component(c, options);
@@ -162,6 +175,93 @@ TEST(GmshCasing, LowestModesAgainstCcxLanczos) {
               "ccx's Lanczos within %.2e relative; f1 = %.3f Hz, f%d = %.3f Hz\n",
               casing.n_dofs(), flange.size(), inner.size(), count, worst, modes.frequency_hz(0),
               count, modes.frequency_hz(count - 1));
+}
+
+} // namespace
+} // namespace rsi
+
+namespace rsi {
+namespace {
+
+// The inner surface SINNER the deck names, as casing_surface.hpp reads it:
+// every face's corners on r = inner_radius; every ray of a 1440 x 13 grid
+// over theta and z (the ends included) finds a face, the point X(xi, eta)
+// on the ray to 1e-12 mm (the sum's rounding, below), rho between the chord of the widest
+// face and the radius; past the ends no face; and a quadratic displacement
+// field of the ring, given at the nodes, interpolated at those points to
+// its exact value there (the face's shape functions reproduce quadratics:
+// to the deck's digits, 4e-13 mm, derived below).
+TEST(GmshCasing, InnerSurfaceUnderEveryTip) {
+  SKIP_WITHOUT_GMSH_CCX();
+  const ComponentCase c = ci_case();
+  const GmshCasingSpec& spec = c.gmsh_casing;
+  const ComponentDeck deck = component_deck(c, ci_options());
+  const CasingSurface surface(deck.deck, "SINNER");
+  const double tol = 1e-9 * (spec.inner_radius + spec.thickness + spec.width);
+  double widest = 0.0;
+  for (int f = 0; f < surface.n_faces(); ++f) {
+    const std::array<Eigen::Vector3d, 6>& x = surface.face_positions(f);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(std::hypot(x[i].x(), x[i].y()), spec.inner_radius, tol) << "face " << f;
+      const Eigen::Vector3d& y = x[(i + 1) % 3];
+      widest = std::max(
+          widest, std::abs(std::remainder(std::atan2(y.y(), y.x()) - std::atan2(x[i].y(), x[i].x()),
+                                          2.0 * M_PI)));
+    }
+  }
+  // NSET INNER = the faces' nodes off the clamped flange.
+  std::set<int> face_nodes;
+  for (int f = 0; f < surface.n_faces(); ++f)
+    for (const int id : surface.face_nodes(f))
+      face_nodes.insert(id);
+  std::set<int> clamped(deck.deck.nsets.at("FLANGE").begin(), deck.deck.nsets.at("FLANGE").end());
+  std::set<int> expected;
+  std::set_difference(face_nodes.begin(), face_nodes.end(), clamped.begin(), clamped.end(),
+                      std::inserter(expected, expected.end()));
+  const std::vector<int>& inner = deck.deck.nsets.at("INNER");
+  EXPECT_EQ(std::set<int>(inner.begin(), inner.end()), expected);
+  const auto field = [](const Eigen::Vector3d& x) { // mm -> mm, quadratic
+    return Eigen::Vector3d(1e-3 + 2e-6 * x.x() * x.y(), -3e-6 * x.z() * x.z() + 1e-5 * x.x(),
+                           4e-7 * x.x() * x.x() - 5e-6 * x.y() * x.z());
+  };
+  int located = 0;
+  double worst_ray = 0.0, worst_field = 0.0, largest_field = 0.0;
+  for (int i = 0; i < 1440; ++i)
+    for (int k = 0; k <= 12; ++k) {
+      const double theta = -M_PI + 2.0 * M_PI * (i + 0.37) / 1440.0;
+      const double z = -spec.width / 2.0 + spec.width * k / 12.0;
+      const std::optional<SurfacePoint> p = surface.locate(theta, z);
+      ASSERT_TRUE(p) << "no face under theta " << theta << ", z " << z;
+      ++located;
+      const std::array<double, 6> n = triangle6_shape_functions(p->xi, p->eta);
+      Eigen::Vector3d x = Eigen::Vector3d::Zero(), u = Eigen::Vector3d::Zero();
+      double largest = 0.0;
+      for (int j = 0; j < 6; ++j) {
+        x += n[j] * surface.face_positions(p->face)[j];
+        u += n[j] * field(surface.face_positions(p->face)[j]);
+        largest = std::max(largest, field(surface.face_positions(p->face)[j]).norm());
+      }
+      const Eigen::Vector3d ray(p->rho * std::cos(theta), p->rho * std::sin(theta), z);
+      worst_ray = std::max(worst_ray, (x - ray).norm());
+      worst_field = std::max(worst_field, (u - field(x)).norm());
+      largest_field = std::max(largest_field, largest);
+      EXPECT_LE(p->rho, spec.inner_radius + tol);
+      EXPECT_GE(p->rho, spec.inner_radius * std::cos(widest / 2.0) - tol);
+    }
+  // X(xi, eta) sums six positions of 277 mm at most (2 eps each, 7.4e-13 mm)
+  // after Newton's last step: 1e-12 mm.
+  EXPECT_LE(worst_ray, 1e-12);
+  // Exact but for the deck's digits: its coordinates in %.12e (13 digits,
+  // 272 mm x 5e-13 a coordinate) put a midside node up to 2.4e-10 mm off
+  // its edge's midpoint, a bubble in X(xi, eta) along which the field moves
+  // by |grad u| <= 1.6e-3 (its coefficients at r <= 277, |z| <= 30 mm):
+  // 3.8e-13 mm, plus the sum's rounding, 6 x 2 eps x 0.2 mm = 2.7e-16.
+  EXPECT_LE(worst_field, 4e-13);
+  EXPECT_FALSE(surface.locate(0.3, spec.width / 2.0 + 1.0)) << "past the back end";
+  EXPECT_FALSE(surface.locate(0.3, -spec.width / 2.0 - 1.0)) << "past the front end";
+  std::printf("SINNER: %d faces (widest %.4f rad around); %d rays located, on the ray within "
+              "%.2e mm, a quadratic field (nodal values up to %.3f mm) within %.2e mm\n",
+              surface.n_faces(), widest, located, worst_ray, largest_field, worst_field);
 }
 
 } // namespace
