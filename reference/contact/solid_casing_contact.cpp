@@ -76,6 +76,11 @@ SurfacePoint SolidCasingContact::point(int contact, double t) const {
   return *p;
 }
 
+double SolidCasingContact::rest_gap(int contact, double t) const {
+  const Tip& tip = m_tips.at(static_cast<size_t>(contact));
+  return point(contact, t).rho - tip.radius - tip.node.growth;
+}
+
 void SolidCasingContact::evaluate(const Eigen::Ref<const Eigen::VectorXd>& current,
                                   const Eigen::Ref<const Eigen::VectorXd>& predicted, double t_next,
                                   double dt, FrictionalContactGeometry& out) const {

@@ -70,6 +70,10 @@ public:
 
   /// The point of the surface above tip c at time t.
   SurfacePoint point(int contact, double t) const;
+  /// The gap of tip c at time t with no displacement, rho - r_c - growth_c.
+  double rest_gap(int contact, double t) const;
+  /// r_c, the tip's distance from the axis.
+  double radius(int contact) const { return m_tips.at(static_cast<size_t>(contact)).radius; }
   const CasingSurface& surface() const { return m_surface; }
 
 private:

@@ -1,5 +1,7 @@
 #include "structure_contact.hpp"
 
+#include <array>
+#include <map>
 #include <stdexcept>
 
 #include "tip_casing_contact.hpp"
@@ -12,9 +14,10 @@ StructureContact::StructureContact(const Problem& problem)
 
 StructureContact::StructureContact(const Problem& problem, double rotation_speed) {
   const ProblemContact& c = problem.contact;
-  if (c.kind != ContactKind::rigid_surface && rotation_speed != c.rotation_speed)
+  if (c.kind != ContactKind::rigid_surface && c.kind != ContactKind::solid_casing &&
+      rotation_speed != c.rotation_speed)
     throw std::invalid_argument(problem.source +
-                                ": only a rigid casing's contact runs at another speed");
+                                ": only a 3D casing's contact runs at another speed");
   switch (c.kind) {
   case ContactKind::none:
     throw std::invalid_argument(problem.source + ": the problem has no contact to run");
@@ -52,6 +55,35 @@ StructureContact::StructureContact(const Problem& problem, double rotation_speed
         c.sliding_speed_at(rotation_speed), rotor.rotation_axis);
     m_frictional = law.get();
     m_rigid_surface = law.get();
+    m_owned = law;
+    return;
+  }
+  case ContactKind::solid_casing: {
+    if (!problem.casing.surface || problem.casing.structure != 1)
+      throw std::logic_error("StructureContact: solid_casing without the casing's surface");
+    const Component& casing = problem.structures.at(1);
+    const int offset = problem.offset(1);
+    // Each casing node's ux, uy, uz (a clamped node has none: not in the map).
+    std::map<int, std::array<int, 3>> casing_dofs;
+    std::map<int, int> found;
+    for (int i = 0; i < casing.n_dofs(); ++i) {
+      const DofInfo& d = casing.dofs[static_cast<size_t>(i)];
+      const int k = d.kind == "ux" ? 0 : d.kind == "uy" ? 1 : d.kind == "uz" ? 2 : -1;
+      if (k < 0) continue;
+      casing_dofs[d.node][static_cast<size_t>(k)] = offset + i;
+      ++found[d.node];
+    }
+    for (const auto& [node, count] : found)
+      if (count != 3)
+        throw std::invalid_argument(problem.source + ": casing node " + std::to_string(node) +
+                                    " has " + std::to_string(count) +
+                                    " of its three translations (a partly clamped contact "
+                                    "node is not taken)");
+    auto law = std::make_shared<const SolidCasingContact>(
+        rigid_surface_nodes(problem.structures.front(), c.contact_nodes), *problem.casing.surface,
+        std::move(casing_dofs), rotation_speed, c.friction_coefficient);
+    m_frictional = law.get();
+    m_solid_casing = law.get();
     m_owned = law;
     return;
   }

@@ -9,7 +9,9 @@
 // - tip_ring, sliding_sign: TipCasingContact (2D tips against the ring);
 // - tip_ring, coulomb: TipRingFrictionalContact;
 // - rigid_surface: RigidSurfaceContact (3D nodes against the rigid casing,
-//   gap g0(Omega t + phi), the casing sliding at -r Omega_s e_t2).
+//   gap g0(Omega t + phi), the casing sliding at -r Omega_s e_t2);
+// - solid_casing: SolidCasingContact (3D nodes against the flexible solid
+//   casing, structure 1, at their angle phi + Omega t).
 // A new law is one more case here; the drivers do not change.
 
 #include <memory>
@@ -18,6 +20,7 @@
 #include "frictional_contact_law.hpp"
 #include "problem.hpp"
 #include "rigid_surface_contact.hpp"
+#include "solid_casing_contact.hpp"
 
 namespace rsi {
 
@@ -44,6 +47,8 @@ public:
   const FrictionalContactLaw* frictional_law() const { return m_frictional; }
   /// The rigid casing's law (its imposed gap and contact frames), or nullptr.
   const RigidSurfaceContact* rigid_surface() const { return m_rigid_surface; }
+  /// The flexible solid casing's law, or nullptr.
+  const SolidCasingContact* solid_casing() const { return m_solid_casing; }
   bool coulomb() const { return m_frictional != nullptr; }
   int n_contacts() const;
 
@@ -52,6 +57,7 @@ private:
   const ContactLaw* m_law = nullptr;
   const FrictionalContactLaw* m_frictional = nullptr;
   const RigidSurfaceContact* m_rigid_surface = nullptr;
+  const SolidCasingContact* m_solid_casing = nullptr;
 };
 
 } // namespace rsi

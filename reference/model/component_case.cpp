@@ -274,23 +274,45 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
   if (object.contains("contact_nodes"))
     out.contact_nodes = integer_list(r, object, "contact_nodes", 1, 2147483647L);
   r.claim("gap");
-  const json& gj = object.contains("gap") ? object.at("gap") : json();
-  const bool oval = gj.is_object() && gj.size() == 1 && gj.contains("oval");
-  const bool constant = gj.is_object() && gj.size() == 1 && gj.contains("constant");
-  if (!oval && !constant)
-    r.fail(r.full("gap"), "must be {\"oval\": {\"g_m\": .., \"width\": ..}} or "
-                          "{\"constant\": g0}, got " + gj.dump().substr(0, 80));
-  ObjectReader gap = r.object("gap");
-  out.oval_gap = oval;
-  if (oval) {
-    ObjectReader o = gap.object("oval");
-    out.gap = o.number("g_m", {0.0, inf, true, true, "(length)"});
-    out.gap_width = o.number("width", {0.0, 1.0, true, true, ""});
-    o.finish();
+  r.claim("casing");
+  if (object.contains("casing")) {
+    // The flexible casing: its geometry makes the gap.
+    if (object.contains("gap"))
+      r.fail(r.full("gap"), "must be absent with rubbing.casing (the flexible casing's surface "
+                            "and the tips' positions make the gap)");
+    const json& cj = object.at("casing");
+    if (!cj.is_object() || !cj.contains("gmsh_casing") || !cj.at("gmsh_casing").is_object())
+      r.fail(r.full("casing"), "must be {\"gmsh_casing\": {parameters}[, \"surface\": "
+                               "\"NAME\"]}, got " + cj.dump().substr(0, 80));
+    ObjectReader casing = r.object("casing");
+    out.casing = read_gmsh_casing(casing.object("gmsh_casing"), cj.at("gmsh_casing"));
+    casing.claim("surface");
+    if (cj.contains("surface")) {
+      out.casing_surface = string_value(casing, cj, "surface");
+      std::transform(out.casing_surface.begin(), out.casing_surface.end(),
+                     out.casing_surface.begin(), [](unsigned char ch) { return std::toupper(ch); });
+    }
+    casing.finish();
   } else {
-    out.gap = gap.number("constant", {-inf, inf, true, true, "(length)"});
+    const json& gj = object.contains("gap") ? object.at("gap") : json();
+    const bool oval = gj.is_object() && gj.size() == 1 && gj.contains("oval");
+    const bool constant = gj.is_object() && gj.size() == 1 && gj.contains("constant");
+    if (!oval && !constant)
+      r.fail(r.full("gap"), "must be {\"oval\": {\"g_m\": .., \"width\": ..}} or "
+                            "{\"constant\": g0} (or rubbing.casing instead), got " +
+                                gj.dump().substr(0, 80));
+    ObjectReader gap = r.object("gap");
+    out.oval_gap = oval;
+    if (oval) {
+      ObjectReader o = gap.object("oval");
+      out.gap = o.number("g_m", {0.0, inf, true, true, "(length)"});
+      out.gap_width = o.number("width", {0.0, 1.0, true, true, ""});
+      o.finish();
+    } else {
+      out.gap = gap.number("constant", {-inf, inf, true, true, "(length)"});
+    }
+    gap.finish();
   }
-  gap.finish();
   out.friction_coefficient = r.number("friction_coefficient", {0.0, 2.0, false, false, ""});
   out.rotation_speed = r.number("rotation_speed", {-1e5, 1e5, false, false, "rad/s"});
   if (out.rotation_speed == 0.0)
@@ -384,6 +406,14 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
     out.liner = l;
   }
   r.finish();
+  if (out.casing && out.sliding_against_rotation)
+    r.fail(r.full("tip_sliding"), "must be \"with_rotation\" against the flexible casing (the "
+                                  "tips pass a casing at rest: the physical sliding)");
+  if (out.casing && out.liner)
+    r.fail(r.full("liner"), "lines the rigid casing only: remove it, or rubbing.casing");
+  if (out.casing && !out.campaign.empty())
+    r.fail(r.full("campaign"), "lists reduced runs, and against the flexible casing (rubbing.casing) "
+                               "only the full-order run is written yet (issue 27): remove it");
   if (static_cast<double>(out.steps_per_revolution) * out.revolutions > 2147483647.0)
     r.fail(r.full("revolutions"), "revolutions x steps_per_revolution must be at most "
                                   "2147483647 (steps of one run), got " +
@@ -715,6 +745,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   }
   top.claim("rubbing");
   if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
+  if (c.rubbing && c.rubbing->casing && c.rotation_effects)
+    top.fail("rubbing.casing", "against the flexible casing the rotor runs without rotation "
+                               "effects for now (component.rotation_effects: false)");
   if (c.rubbing && c.rubbing->clearance_speed != 0.0 && !c.rotation_effects)
     top.fail("rubbing.clearance_speed", "needs component.rotation_effects: true (without rotation "
                                         "effects the tip does not grow and the gap is the same "
@@ -725,6 +758,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     if (!c.rubbing)
       top.fail("sweep", "needs the case's \"rubbing\" object (a component's sweep runs its "
                         "rubbing set-up at each speed)");
+    if (c.rubbing->casing)
+      top.fail("sweep", "against the flexible casing (rubbing.casing) is not written yet (issue "
+                        "27): remove it");
     c.sweep = read_component_sweep(top, document.at("sweep"), *c.rubbing);
   }
   c.damping = read_damping(top, document);

@@ -124,6 +124,12 @@ struct RubbingSetup {
   /// gap closes by growth(Omega) - growth(clearance_speed). 0: the clearance
   /// at rest (cold), the whole growth closes it.
   double clearance_speed = 0.0;
+  /// "casing": the flexible 3D casing the tips meet (issue 27), in place
+  /// of the rigid casing's "gap": the ring of gmsh_casing.hpp and the name
+  /// of its contact surface (an element surface of its deck). Absent: the
+  /// rigid casing.
+  std::optional<GmshCasingSpec> casing;
+  std::string casing_surface = "SINNER";
 };
 
 /// One run of a component sweep: "full" (modes 0) or a reduced method and

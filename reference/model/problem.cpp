@@ -18,7 +18,8 @@ int ProblemContact::n_contacts() const {
   switch (kind) {
   case ContactKind::none: return 0;
   case ContactKind::tip_ring: return static_cast<int>(rotor_dofs.size()) / 2; // u, v a tip
-  case ContactKind::rigid_surface: return static_cast<int>(contact_nodes.size());
+  case ContactKind::rigid_surface:
+  case ContactKind::solid_casing: return static_cast<int>(contact_nodes.size());
   }
   return 0;
 }
@@ -190,6 +191,27 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
         for (int i = 0; i < comp.n_dofs(); ++i)
           if (comp.dofs[i].node == node && comp.dofs[i].kind == kind)
             p.contact.rotor_dofs.push_back(i);
+    if (r.casing) {
+      // The flexible casing beside the rotor: structure 1.
+      ComponentCase casing;
+      casing.case_path = c.case_path;
+      casing.name = c.name + "-casing";
+      casing.source = ComponentSource::gmsh_casing;
+      casing.gmsh_casing = *r.casing;
+      casing.boundary_node_set = "INNER";
+      casing.units = c.units;
+      casing.lumped_mass = c.lumped_mass;
+      const ComponentDeck deck = component_deck(casing, load);
+      try {
+        p.casing.surface.emplace(deck.deck, r.casing_surface);
+      } catch (const ImportError& e) {
+        throw CaseError(c.case_path + ": key 'rubbing.casing.surface': " + e.what());
+      }
+      p.structures.push_back(load_component(casing, load));
+      p.casing.rigid = false;
+      p.casing.structure = 1;
+      p.contact.kind = ContactKind::solid_casing;
+    }
     p.casing.oval_gap = r.oval_gap;
     p.casing.gap = r.gap;
     p.casing.gap_width = r.gap_width;

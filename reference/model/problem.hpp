@@ -28,6 +28,10 @@
 //   With component.rotation_effects the structure is K(Omega) at the
 //   case's speed and the gaps close by the contact nodes' static growth
 //   (ProblemCasing::tip_growth).
+//   With rubbing.casing the casing is flexible instead: structure 1 the
+//   gmsh ring (gmsh_casing.hpp), its contact surface read from its deck;
+//   they meet through the 3D tip/solid-casing law (contact: solid_casing,
+//   Coulomb); the step from the larger omega_max of the two.
 
 #include <optional>
 #include <string>
@@ -38,6 +42,7 @@
 #include "bladed_disk.hpp"
 #include "case_file.hpp"
 #include "casing.hpp"
+#include "casing_surface.hpp"
 #include "component.hpp"
 #include "component_case.hpp"
 
@@ -49,7 +54,8 @@ enum class ProblemKind { paper, component };
 enum class ContactKind {
   none,         ///< no contact (a component case without "rubbing")
   tip_ring,     ///< 2D blade tips against the flexible ring (tip_casing_contact, tip_ring_frictional_contact)
-  rigid_surface ///< 3D nodes against the rigid casing (rigid_surface_contact)
+  rigid_surface, ///< 3D nodes against the rigid casing (rigid_surface_contact)
+  solid_casing   ///< 3D nodes against the flexible solid casing (solid_casing_contact)
 };
 
 /// How the structures meet.
@@ -115,6 +121,8 @@ struct ProblemCasing {
   std::vector<double> tip_growth;
   /// rigid: the abradable liner on it (absent: the rigid, unworn surface).
   std::optional<ProblemLiner> liner;
+  /// flexible 3D (solid_casing): its contact surface (casing_surface.hpp).
+  std::optional<CasingSurface> surface;
 };
 
 /// The external force on the system dofs: F while t <= until (plus 1e-6 dt,

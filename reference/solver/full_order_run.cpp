@@ -168,12 +168,22 @@ RunResult run_fixed_step(const Problem& problem, const RunOptions& options) {
   return result;
 }
 
-/// The per-revolution rule (a component on the rigid casing).
+/// The per-revolution rule (a component on the rigid casing, or with the
+/// flexible solid casing beside it).
 RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
                              const RunPoint& point) {
-  if (problem.contact.kind != ContactKind::rigid_surface)
+  const bool flexible = problem.contact.kind == ContactKind::solid_casing;
+  if (problem.contact.kind != ContactKind::rigid_surface && !flexible)
     throw std::invalid_argument(problem.source + ": no rubbing set-up to run");
   const Component& rotor = problem.structures.front();
+  // The system: the rotor alone, or rotor and casing side by side.
+  Eigen::SparseMatrix<double> system_k, system_m;
+  if (flexible) {
+    system_k = problem.stiffness();
+    system_m = problem.mass();
+  }
+  const Eigen::SparseMatrix<double>& k_all = flexible ? system_k : rotor.stiffness;
+  const Eigen::SparseMatrix<double>& m_all = flexible ? system_m : rotor.mass;
   const ProblemSteps& rule = problem.steps;
   const double omega = point.rotation_speed != 0.0 ? point.rotation_speed
                                                    : problem.contact.rotation_speed;
@@ -182,9 +192,11 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   RunResult result;
   RunSummary& s = result.summary;
   s.method = "full";
-  s.n_dofs = static_cast<int>(rotor.stiffness.rows());
-  const double omega_max =
-      point.omega_max > 0.0 ? point.omega_max : max_angular_frequency(rotor.stiffness, rotor.mass);
+  s.n_dofs = static_cast<int>(k_all.rows());
+  double omega_max = point.omega_max;
+  if (!(omega_max > 0.0))
+    for (const Component& part : problem.structures)
+      omega_max = std::max(omega_max, max_angular_frequency(part.stiffness, part.mass));
   const double sample_dt = rule.sample_step(omega);
   const double k = rule.steps_per_sample(sample_dt, 2.0 / omega_max);
   const double steps = rule.samples(revolutions) * k;
@@ -227,11 +239,13 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
       throw CaseError(problem.source + ": the abradable liner: " + e.what());
     }
   }
-  RunMonitor monitor(rules, std::make_unique<RubbingMonitor>(*contact.rigid_surface()), run,
-                     result);
+  RunMonitor monitor(rules,
+                     flexible ? std::make_unique<RubbingMonitor>(*contact.solid_casing())
+                              : std::make_unique<RubbingMonitor>(*contact.rigid_surface()),
+                     run, result);
   FullOrderSystem system;
-  system.stiffness = &rotor.stiffness;
-  system.mass = &rotor.mass;
+  system.stiffness = &k_all;
+  system.mass = &m_all;
   system.dt = dt;
   system.damping = problem.damping.rayleigh;
   system.contact = &contact;

@@ -285,6 +285,28 @@ TEST(Problem, GmshBladedDiskDefaultCaseReads) {
   EXPECT_EQ(c.boundary_node_set, "TIP");
 }
 
+// The paper's system in 3D, CI size: the 6-sector disk (29,484 dofs) and the
+// flexible casing beside it (structure 1; 21,747 dofs at inner radius
+// 270.6 mm), meeting through the solid-casing law at the 96 tip nodes.
+TEST(Problem, SystemCase) {
+  if (const std::string why = component_missing("bladed-disk3d"); !why.empty())
+    GTEST_SKIP() << "not run: " << why;
+  const Problem p = load_problem(case_path("bladed-disk3d-casing-ci.json"), {"", cache_dir()});
+  ASSERT_EQ(p.structures.size(), 2u);
+  EXPECT_EQ(p.structures[0].n_dofs(), 29484);
+  EXPECT_EQ(p.structures[1].n_dofs(), 21747);
+  EXPECT_EQ(p.n_dofs(), 29484 + 21747);
+  EXPECT_EQ(p.contact.kind, ContactKind::solid_casing);
+  EXPECT_EQ(p.contact.n_contacts(), 96);
+  EXPECT_FALSE(p.casing.rigid);
+  EXPECT_EQ(p.casing.structure, 1);
+  ASSERT_TRUE(p.casing.surface.has_value());
+  EXPECT_GT(p.casing.surface->n_faces(), 0);
+  const StructureContact contact(p);
+  ASSERT_NE(contact.solid_casing(), nullptr);
+  EXPECT_EQ(contact.n_contacts(), 96);
+}
+
 // The flexible 3D casing's CI model: a ring at element size 15 clamped at its
 // front flange, 21,777 dofs (test_gmsh_casing checks its modes against ccx's
 // Lanczos), no rubbing yet.
@@ -334,6 +356,7 @@ TEST(Problem, EveryCaseFileIsCovered) {
       {"blade3d-rubbing.json", "component"}, {"blade3d-rubbing-rotating.json", "component"},
       {"blade3d-rubbing-liner.json", "component"},
       {"bladed-disk3d-ci.json", "component"}, {"bladed-disk3d.json", "component"},
+      {"bladed-disk3d-casing-ci.json", "component"},
       {"casing3d-ci.json", "component"},
       {"rotor37.json", "component"},
       {"rotor37-rubbing.json", "component"}, {"rotor37-rubbing-lumped.json", "component"},
