@@ -12,13 +12,6 @@
 namespace rsi {
 namespace {
 
-/// d N_i / d xi and d N_i / d eta (the header's shape functions).
-std::array<std::array<double, 6>, 2> triangle6_derivatives(double xi, double eta) {
-  const double l1 = 1.0 - xi - eta, l2 = xi, l3 = eta;
-  return {{{-(4.0 * l1 - 1.0), 4.0 * l2 - 1.0, 0.0, 4.0 * (l1 - l2), 4.0 * l3, -4.0 * l3},
-           {-(4.0 * l1 - 1.0), 0.0, 4.0 * l3 - 1.0, -4.0 * l2, 4.0 * l2, 4.0 * (l1 - l3)}}};
-}
-
 /// theta in [-pi, pi).
 double wrapped(double theta) {
   const double t = std::remainder(theta, 2.0 * M_PI);
@@ -43,6 +36,12 @@ std::array<int, 6> c3d10_face_nodes(int face) {
     throw std::invalid_argument("c3d10_face_nodes: face must be 1 .. 4, got " +
                                 std::to_string(face));
   }
+}
+
+std::array<std::array<double, 6>, 2> triangle6_derivatives(double xi, double eta) {
+  const double l1 = 1.0 - xi - eta, l2 = xi, l3 = eta;
+  return {{{-(4.0 * l1 - 1.0), 4.0 * l2 - 1.0, 0.0, 4.0 * (l1 - l2), 4.0 * l3, -4.0 * l3},
+           {-(4.0 * l1 - 1.0), 0.0, 4.0 * l3 - 1.0, -4.0 * l2, 4.0 * l2, 4.0 * (l1 - l3)}}};
 }
 
 std::array<double, 6> triangle6_shape_functions(double xi, double eta) {
@@ -164,7 +163,22 @@ std::optional<SurfacePoint> CasingSurface::on_face(int f, double theta, double z
     if (!lu.isInvertible()) return std::nullopt;
     const Eigen::Vector3d step = lu.solve(r);
     s -= step;
-    if (step.norm() <= 1e-15 * (1.0 + s.norm())) break;
+    // xi, eta are dimensionless, rho a length: each to round-off.
+    if (std::abs(step(0)) + std::abs(step(1)) <= 1e-15 &&
+        std::abs(step(2)) <= 1e-15 * std::abs(s(2)))
+      break;
+  }
+  // Accepted only where Newton converged: X(xi, eta) on the ray to the
+  // rounding of the face's coordinates (a few eps of their size; 1e-12 of it).
+  {
+    const std::array<double, 6> n = triangle6_shape_functions(s(0), s(1));
+    Eigen::Vector3d r = -s(2) * er - target;
+    double size = 0.0;
+    for (int i = 0; i < 6; ++i) {
+      r += n[i] * x[i];
+      size = std::max(size, x[i].norm());
+    }
+    if (!(r.norm() <= 1e-12 * size)) return std::nullopt;
   }
   constexpr double edge = 1e-12; // a point on an edge belongs to both faces
   if (!(s(0) >= -edge && s(1) >= -edge && s(0) + s(1) <= 1.0 + edge && s(2) > 0.0))

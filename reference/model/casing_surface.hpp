@@ -42,6 +42,8 @@ std::array<int, 6> c3d10_face_nodes(int face);
 
 /// The six quadratic shape functions at (xi, eta), in the triangle's order.
 std::array<double, 6> triangle6_shape_functions(double xi, double eta);
+/// Their derivatives: [0] d/d xi, [1] d/d eta.
+std::array<std::array<double, 6>, 2> triangle6_derivatives(double xi, double eta);
 
 /// A face under a tip: which, where on it (xi, eta) and the distance rho
 /// from the axis to the face along the tip's ray.

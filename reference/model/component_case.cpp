@@ -745,6 +745,14 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   }
   top.claim("rubbing");
   if (document.contains("rubbing")) c.rubbing = read_rubbing(top.object("rubbing"), document.at("rubbing"));
+  // The gmsh ring is built about z in mm (gmsh_casing.hpp): the rotor must
+  // turn about z and be in the same units.
+  if (c.rubbing && c.rubbing->casing && c.rotation_axis != Eigen::Vector3d::UnitZ())
+    top.fail("component.rotation_axis", "must be [0, 0, 1] with rubbing.casing (the flexible "
+                                        "ring is built about z)");
+  if (c.rubbing && c.rubbing->casing && c.units != "N, mm, t, s")
+    top.fail("component.units", "must be \"N, mm, t, s\" with rubbing.casing (the flexible "
+                                "ring's units), got \"" + c.units + "\"");
   if (c.rubbing && c.rubbing->casing && c.rotation_effects)
     top.fail("rubbing.casing", "against the flexible casing the rotor runs without rotation "
                                "effects for now (component.rotation_effects: false)");

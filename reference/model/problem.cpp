@@ -160,6 +160,52 @@ ProblemLiner problem_liner(const ComponentCase& c, const LinerSetup& setup, cons
 
 } // namespace
 
+namespace {
+
+/// The flexible casing of rubbing.casing beside the rotor: structure 1, its
+/// contact surface, the solid-casing law. Its model's messages name the
+/// case's keys under rubbing.casing; a source override (--source) is the
+/// rotor's, not the casing's.
+void load_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& load, Problem& p) {
+  const RubbingSetup& r = *c.rubbing;
+  ComponentCase casing;
+  casing.case_path = c.case_path;
+  casing.name = c.name + "-casing";
+  casing.source = ComponentSource::gmsh_casing;
+  casing.gmsh_casing = *r.casing;
+  casing.boundary_node_set = "INNER";
+  casing.units = c.units;
+  casing.lumped_mass = c.lumped_mass;
+  ComponentLoadOptions own = load;
+  own.source_override.clear();
+  const auto renamed = [](std::string what) {
+    for (const auto& [from, to] :
+         {std::pair<std::string, std::string>{"component.source.gmsh_casing", "rubbing.casing.gmsh_casing"},
+          {"component.boundary.node_set", "rubbing.casing (its node set INNER)"}})
+      for (size_t at = what.find(from); at != std::string::npos; at = what.find(from, at + to.size()))
+        what.replace(at, from.size(), to);
+    return what;
+  };
+  try {
+    const ComponentDeck deck = component_deck(casing, own);
+    try {
+      p.casing.surface.emplace(deck.deck, r.casing_surface);
+    } catch (const ImportError& e) {
+      throw CaseError(c.case_path + ": key 'rubbing.casing.surface': " + e.what());
+    }
+    p.structures.push_back(load_component(casing, own));
+  } catch (const CaseError& e) {
+    throw CaseError(renamed(e.what()), e.advice());
+  } catch (const ImportError& e) {
+    throw ImportError(renamed(e.what()), e.advice());
+  }
+  p.casing.rigid = false;
+  p.casing.structure = 1;
+  p.contact.kind = ContactKind::solid_casing;
+}
+
+} // namespace
+
 Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& load) {
   Problem p;
   p.kind = ProblemKind::component;
@@ -191,27 +237,6 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
         for (int i = 0; i < comp.n_dofs(); ++i)
           if (comp.dofs[i].node == node && comp.dofs[i].kind == kind)
             p.contact.rotor_dofs.push_back(i);
-    if (r.casing) {
-      // The flexible casing beside the rotor: structure 1.
-      ComponentCase casing;
-      casing.case_path = c.case_path;
-      casing.name = c.name + "-casing";
-      casing.source = ComponentSource::gmsh_casing;
-      casing.gmsh_casing = *r.casing;
-      casing.boundary_node_set = "INNER";
-      casing.units = c.units;
-      casing.lumped_mass = c.lumped_mass;
-      const ComponentDeck deck = component_deck(casing, load);
-      try {
-        p.casing.surface.emplace(deck.deck, r.casing_surface);
-      } catch (const ImportError& e) {
-        throw CaseError(c.case_path + ": key 'rubbing.casing.surface': " + e.what());
-      }
-      p.structures.push_back(load_component(casing, load));
-      p.casing.rigid = false;
-      p.casing.structure = 1;
-      p.contact.kind = ContactKind::solid_casing;
-    }
     p.casing.oval_gap = r.oval_gap;
     p.casing.gap = r.gap;
     p.casing.gap_width = r.gap_width;
@@ -234,6 +259,8 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     p.outputs.output_every = r.output_every;
     p.outputs.response_dof = points.response_dof;
     p.outputs.response_name = std::move(points.response_name);
+    // Last: the casing joins `structures`, which moves the rotor (`comp`).
+    if (r.casing) load_flexible_casing(c, load, p);
   }
   p.component_case = c;
   return p;

@@ -205,7 +205,9 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
                                 " steps, more than a run counts");
   const double dt = sample_dt / k;
   check_time_step(dt, omega_max, options.force, s);
-  s.bladed_disk_critical_dt = s.critical_dt;
+  // The rotor's own limit (a reduced run's is compared with it).
+  s.bladed_disk_critical_dt =
+      flexible ? 2.0 / max_angular_frequency(rotor.stiffness, rotor.mass) : s.critical_dt;
 
   // The response dof rides in the rows as the one "tip", gathered on output
   // steps.

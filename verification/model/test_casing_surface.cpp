@@ -102,6 +102,46 @@ TEST(CasingSurface, ShapeFunctions) {
     }
 }
 
+// The derivatives against central differences of the shape functions:
+// exact for quadratics, so the difference quotient's error is rounding,
+// eps / h = 2e-10 at h = 1e-6 (1e-9 asserted).
+TEST(CasingSurface, ShapeFunctionDerivatives) {
+  const double h = 1e-6;
+  for (const double xi : {0.1, 0.3, 0.6})
+    for (const double eta : {0.05, 0.25}) {
+      const std::array<std::array<double, 6>, 2> d = triangle6_derivatives(xi, eta);
+      const std::array<double, 6> xp = triangle6_shape_functions(xi + h, eta),
+                                  xm = triangle6_shape_functions(xi - h, eta),
+                                  ep = triangle6_shape_functions(xi, eta + h),
+                                  em = triangle6_shape_functions(xi, eta - h);
+      for (int i = 0; i < 6; ++i) {
+        EXPECT_NEAR(d[0][i], (xp[i] - xm[i]) / (2.0 * h), 1e-9) << "dN_" << i << "/dxi";
+        EXPECT_NEAR(d[1][i], (ep[i] - em[i]) / (2.0 * h), 1e-9) << "dN_" << i << "/deta";
+      }
+    }
+}
+
+// Each face S1 .. S4 of C3D10 (ccx's convention: S1 = 1 2 3, S2 = 1 4 2,
+// S3 = 2 4 3, S4 = 3 4 1) as a 6-node triangle: its corners those, and each
+// midside node the midpoint of its two corners (the deck's midside nodes
+// are the edges' midpoints, written in 17 digits: to 1e-13 mm).
+TEST(CasingSurface, TheFourFacesOfATetrahedron) {
+  const CalculixDeck deck = read_deck(tetrahedron_deck(
+      false, "*SURFACE, NAME=ALL, TYPE=ELEMENT\n7, S1\n7, S2\n7, S3\n7, S4\n"));
+  const CasingSurface surface(deck, "ALL");
+  ASSERT_EQ(surface.n_faces(), 4);
+  const std::array<std::array<int, 3>, 4> corners = {{{1, 2, 3}, {1, 4, 2}, {2, 4, 3}, {3, 4, 1}}};
+  for (int f = 0; f < 4; ++f) {
+    const std::array<int, 6>& ids = surface.face_nodes(f);
+    const std::array<Eigen::Vector3d, 6>& x = surface.face_positions(f);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(ids[i], corners[f][i]) << "face S" << f + 1 << " corner " << i;
+      EXPECT_LE((x[3 + i] - (x[i] + x[(i + 1) % 3]) / 2.0).norm(), 1e-13)
+          << "face S" << f + 1 << " midside " << i;
+    }
+  }
+}
+
 TEST(CasingSurface, LocateOnFlatAndCurvedFaces) {
   for (const bool curved : {false, true}) {
     const CalculixDeck deck =
@@ -151,6 +191,7 @@ TEST(CasingSurface, RefusalsNameTheSurface) {
       ADD_FAILURE() << surface_lines << ": accepted";
     } catch (const ImportError& e) {
       EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("NAME=" + name), std::string::npos) << e.what();
     }
   };
   refused("", "INNER", "defines no element surface");
