@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Geometry>
+
 namespace rsi {
 namespace {
 
@@ -16,19 +18,14 @@ struct GaussPoint {
 };
 constexpr double a1 = 0.445948490915965, b1 = 1.0 - 2.0 * a1, w1 = 0.223381589678011 / 2.0;
 constexpr double a2 = 0.091576213509771, b2 = 1.0 - 2.0 * a2, w2 = 0.109951743655322 / 2.0;
-constexpr std::array<GaussPoint, 6> kRule = {{{a1, a1, w1},
-                                              {a1, b1, w1},
-                                              {b1, a1, w1},
-                                              {a2, a2, w2},
-                                              {a2, b2, w2},
-                                              {b2, a2, w2}}};
+constexpr std::array<GaussPoint, 6> kRule = {
+    {{a1, a1, w1}, {a1, b1, w1}, {b1, a1, w1}, {a2, a2, w2}, {a2, b2, w2}, {b2, a2, w2}}};
 
 } // namespace
 
 Eigen::VectorXd casing_pressure_forces(const CasingSurface& surface, const Component& casing,
                                        double p0, int nodal_diameters) {
-  if (!std::isfinite(p0))
-    throw std::invalid_argument("casing_pressure_forces: p0 must be finite");
+  if (!std::isfinite(p0)) throw std::invalid_argument("casing_pressure_forces: p0 must be finite");
   if (nodal_diameters < 0)
     throw std::invalid_argument("casing_pressure_forces: nodal_diameters = " +
                                 std::to_string(nodal_diameters) + ", allowed >= 0");
@@ -54,8 +51,8 @@ Eigen::VectorXd casing_pressure_forces(const CasingSurface& surface, const Compo
         deta += d[1][i] * x[i];
       }
       const double theta = std::atan2(point.y(), point.x());
-      const Eigen::Vector3d traction =
-          p0 * std::cos(nodal_diameters * theta) * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+      const Eigen::Vector3d traction = p0 * std::cos(nodal_diameters * theta) *
+                                       Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
       const double area = g.weight * dxi.cross(deta).norm();
       for (int i = 0; i < 6; ++i) {
         const auto node = dofs.find(ids[i]);

@@ -286,6 +286,23 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
                                "\"NAME\"]}, got " + cj.dump().substr(0, 80));
     ObjectReader casing = r.object("casing");
     out.casing = read_gmsh_casing(casing.object("gmsh_casing"), cj.at("gmsh_casing"));
+    casing.claim("forcing");
+    if (cj.contains("forcing")) {
+      const json& fj = cj.at("forcing");
+      ObjectReader forcing = casing.object("forcing");
+      RubbingSetup::CasingForcing f;
+      f.pressure = forcing.number("pressure", {-inf, inf, true, true, "(force/length^2, nonzero)"});
+      if (f.pressure == 0.0)
+        forcing.fail(forcing.full("pressure"), "must be nonzero (absent forcing: no load), got 0");
+      forcing.claim("nodal_diameters");
+      if (fj.contains("nodal_diameters"))
+        f.nodal_diameters = static_cast<int>(forcing.integer("nodal_diameters", 0, 1000));
+      forcing.claim("duration");
+      if (fj.contains("duration"))
+        f.duration = forcing.number("duration", {0.0, inf, true, true, "s"});
+      forcing.finish();
+      out.casing_forcing = f;
+    }
     casing.claim("surface");
     if (cj.contains("surface")) {
       out.casing_surface = string_value(casing, cj, "surface");

@@ -130,6 +130,15 @@ struct RubbingSetup {
   /// rigid casing.
   std::optional<GmshCasingSpec> casing;
   std::string casing_surface = "SINNER";
+  /// "casing.forcing": the paper's load on the flexible casing
+  /// (casing_pressure.hpp): p0 cos(n theta) e_r on its contact surface
+  /// while t <= duration. Absent: none.
+  struct CasingForcing {
+    double pressure = 0.0;    ///< p0 [force/length^2], finite, nonzero
+    int nodal_diameters = 2;  ///< n, [0, 1000]
+    double duration = 2e-4;   ///< [s], > 0
+  };
+  std::optional<CasingForcing> casing_forcing;
 };
 
 /// One run of a component sweep: "full" (modes 0) or a reduced method and

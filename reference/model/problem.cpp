@@ -8,6 +8,7 @@
 
 #include "assembler.hpp"
 #include "casing_forcing.hpp"
+#include "casing_pressure.hpp"
 #include "paper_components.hpp"
 #include "rotating_component.hpp"
 #include "rubbing_points.hpp"
@@ -202,6 +203,13 @@ void load_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& lo
   p.casing.rigid = false;
   p.casing.structure = 1;
   p.contact.kind = ContactKind::solid_casing;
+  if (r.casing_forcing) {
+    const RubbingSetup::CasingForcing& f = *r.casing_forcing;
+    p.forcing.force = Eigen::VectorXd::Zero(p.n_dofs());
+    p.forcing.force.tail(p.structures[1].n_dofs()) = casing_pressure_forces(
+        *p.casing.surface, p.structures[1], f.pressure, f.nodal_diameters);
+    p.forcing.until = f.duration;
+  }
 }
 
 } // namespace

@@ -251,6 +251,7 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   system.dt = dt;
   system.damping = problem.damping.rayleigh;
   system.contact = &contact;
+  system.forcing = &problem.forcing; // the flexible casing's load (none on the rigid one)
   if (run.tip_displacement) system.tip_dofs = {problem.outputs.response_dof};
   system.failure_is_status = true;
   system.liner = liner ? &*liner : nullptr;

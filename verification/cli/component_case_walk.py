@@ -342,6 +342,9 @@ SYSTEM["rubbing"]["revolutions"] = 0.0005
 WALK["rubbing.casing"] = (SYSTEM, "full", [with_value("rubbing.casing.gmsh_casing.inner_radius", 270.55)])
 WALK["rubbing.casing.gmsh_casing"] = (SYSTEM, "full", [with_value("rubbing.casing.gmsh_casing.thickness", 6.0)])
 WALK["rubbing.casing.surface"] = (SYSTEM, "full", [with_value("rubbing.casing.surface", "SOUTER")])
+WALK["rubbing.casing.forcing"] = (SYSTEM, "full", [with_value("rubbing.casing.forcing.pressure", 40.0),
+                                                   with_value("rubbing.casing.forcing.nodal_diameters", 3),
+                                                   with_value("rubbing.casing.forcing.duration", 1e-6)])
 
 
 def documented_keys():

@@ -24,12 +24,14 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "calculix_deck.hpp"
 #include "calculix_run.hpp"
 #include "case_file.hpp"
+#include "casing_pressure.hpp"
 #include "casing_surface.hpp"
 #include "component_case.hpp"
 #include "gmsh_blade_fit.hpp"
@@ -262,6 +264,84 @@ TEST(GmshCasing, InnerSurfaceUnderEveryTip) {
   std::printf("SINNER: %d faces (widest %.4f rad around); %d rays located, on the ray within "
               "%.2e mm, a quadratic field (nodal values up to %.3f mm) within %.2e mm\n",
               surface.n_faces(), widest, located, worst_ray, largest_field, worst_field);
+}
+
+} // namespace
+} // namespace rsi
+
+namespace rsi {
+namespace {
+
+// The paper's load on the casing (casing_pressure.hpp), p0 cos(2 theta) e_r
+// on SINNER, against an independent integral: each face's flat triangle of
+// its corners cut into 4^4 = 256 triangles, the integrand at their
+// centroids (the midpoint rule; no shape function). The consistent forces
+// satisfy, for every field Q linear in x (which the face's quadratic shape
+// functions reproduce exactly on a flat face),
+//   sum_j f_j . Q(x_j) = integral of p e_r . Q dA,
+// here for Q = e_x (the resultant along x, ~0 for a 2-diameter load) and
+// Q = (x, -y, 0) / R (e_r . Q = rho cos(2 theta) / R: the load's own
+// pattern, about p0 pi R w). Tolerance: the midpoint rule's error on a
+// sub-triangle of angular size alpha / 16 (alpha <= 0.07 rad, the widest
+// face) is (alpha/16)^2 / 24 times the integrand's second derivative in
+// theta (<= 8 p0 for cos^2(2 theta)): 1.6e-5 p0 per unit area, so 2e-5 of
+// p0 A; the 6-point rule of degree 4 is closer still.
+TEST(GmshCasing, PressureLoadAgainstAFineIntegral) {
+  SKIP_WITHOUT_GMSH_CCX();
+  const ComponentCase c = ci_case();
+  const ComponentDeck deck = component_deck(c, ci_options());
+  const CasingSurface surface(deck.deck, "SINNER");
+  // Every node free (the identity needs every face node's share).
+  Component free;
+  for (const ComponentNode& node : deck.deck.nodes)
+    for (const char* kind : {"ux", "uy", "uz"})
+      free.dofs.push_back({node.id, kind, false});
+  std::map<int, int> first_dof;
+  for (int i = 0; i < free.n_dofs(); i += 3)
+    first_dof[free.dofs[static_cast<size_t>(i)].node] = i;
+  const double p0 = 1.0, r = c.gmsh_casing.inner_radius;
+  const Eigen::VectorXd f = casing_pressure_forces(surface, free, p0, 2);
+  const auto q_pattern = [&](const Eigen::Vector3d& x) { return Eigen::Vector3d(x.x() / r, -x.y() / r, 0.0); };
+  double sum_x = 0.0, sum_pattern = 0.0;
+  for (const auto& [node, i] : first_dof) {
+    const Eigen::Vector3d fj = f.segment<3>(i);
+    const Eigen::Vector3d& x = deck.deck.nodes[static_cast<size_t>(
+        std::lower_bound(deck.deck.nodes.begin(), deck.deck.nodes.end(), node,
+                         [](const ComponentNode& a, int id) { return a.id < id; }) -
+        deck.deck.nodes.begin())].x;
+    sum_x += fj.x();
+    sum_pattern += fj.dot(q_pattern(x));
+  }
+  // The fine integral over the flat faces.
+  double area = 0.0, fine_x = 0.0, fine_pattern = 0.0;
+  constexpr int cuts = 16; // 16 x 16 = 256 sub-triangles
+  for (int face = 0; face < surface.n_faces(); ++face) {
+    const std::array<Eigen::Vector3d, 6>& x = surface.face_positions(face);
+    const Eigen::Vector3d e1 = (x[1] - x[0]) / cuts, e2 = (x[2] - x[0]) / cuts;
+    const double sub_area = e1.cross(e2).norm() / 2.0;
+    for (int i = 0; i < cuts; ++i)
+      for (int j = 0; i + j < cuts; ++j)
+        for (int up = 0; up < (i + j + 1 < cuts ? 2 : 1); ++up) {
+          const Eigen::Vector3d centroid =
+              x[0] + (up == 0 ? (i + 1.0 / 3.0) * e1 + (j + 1.0 / 3.0) * e2
+                              : (i + 2.0 / 3.0) * e1 + (j + 2.0 / 3.0) * e2);
+          const double theta = std::atan2(centroid.y(), centroid.x());
+          const Eigen::Vector3d traction =
+              p0 * std::cos(2.0 * theta) * Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+          area += sub_area;
+          fine_x += sub_area * traction.x();
+          fine_pattern += sub_area * traction.dot(q_pattern(centroid));
+        }
+  }
+  const double scale = p0 * area;
+  EXPECT_NEAR(sum_x, fine_x, 2e-5 * scale);
+  EXPECT_NEAR(sum_pattern, fine_pattern, 2e-5 * scale);
+  // The pattern's integral is about half the area (cos^2 averages 1/2, rho ~ R).
+  EXPECT_NEAR(fine_pattern / scale, 0.5, 0.01);
+  std::printf("p0 cos(2 theta) on SINNER (area %.1f mm^2, 2 pi R w = %.1f): resultant x %.3e "
+              "(fine %.3e), pattern %.6e (fine %.6e) N mm, relative %.2e\n",
+              area, 2.0 * M_PI * r * c.gmsh_casing.width, sum_x, fine_x, sum_pattern, fine_pattern,
+              std::abs(sum_pattern - fine_pattern) / scale);
 }
 
 } // namespace
