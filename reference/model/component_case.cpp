@@ -90,6 +90,17 @@ void read_spec_numbers(ObjectReader& r, const json& object,
   r.fail(r.full(field), colon == std::string::npos ? what : what.substr(colon + 2));
 }
 
+/// `check()` (a spec's range check), its failure reported at the case
+/// file's key (fail_at_spec_key).
+template <class Check>
+void check_at_keys(ObjectReader& r, const Check& check, const std::string& prefix) {
+  try {
+    check();
+  } catch (const std::invalid_argument& e) {
+    fail_at_spec_key(r, e, prefix);
+  }
+}
+
 /// The blade's parameters: every key optional, the coarse default otherwise
 /// (gmsh_blade.hpp); ranges checked by check_gmsh_blade_spec.
 GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
@@ -110,11 +121,7 @@ GmshBladeSpec read_gmsh_blade(ObjectReader r, const json& object) {
                      {"poisson_ratio", &spec.poisson_ratio},
                      {"density", &spec.density}});
   r.finish();
-  try {
-    check_gmsh_blade_spec(spec);
-  } catch (const std::invalid_argument& e) {
-    fail_at_spec_key(r, e, "GmshBladeSpec.");
-  }
+  check_at_keys(r, [&] { check_gmsh_blade_spec(spec); }, "GmshBladeSpec.");
   return spec;
 }
 
@@ -138,12 +145,8 @@ GmshBladedDiskSpec read_gmsh_bladed_disk(ObjectReader r, const json& object) {
                      {"rim_radius", &spec.rim_radius},
                      {"disk_width", &spec.disk_width}});
   r.finish();
-  try {
-    check_gmsh_bladed_disk_spec(spec);
-  } catch (const std::invalid_argument& e) {
-    // The blade's own fields were checked by read_gmsh_blade.
-    fail_at_spec_key(r, e, "GmshBladedDiskSpec.");
-  }
+  // The blade's own fields were checked by read_gmsh_blade.
+  check_at_keys(r, [&] { check_gmsh_bladed_disk_spec(spec); }, "GmshBladedDiskSpec.");
   return spec;
 }
 
@@ -164,11 +167,7 @@ GmshCasingSpec read_gmsh_casing(ObjectReader r, const json& object) {
                      {"poisson_ratio", &spec.poisson_ratio},
                      {"density", &spec.density}});
   r.finish();
-  try {
-    check_gmsh_casing_spec(spec);
-  } catch (const std::invalid_argument& e) {
-    fail_at_spec_key(r, e, "GmshCasingSpec.");
-  }
+  check_at_keys(r, [&] { check_gmsh_casing_spec(spec); }, "GmshCasingSpec.");
   return spec;
 }
 

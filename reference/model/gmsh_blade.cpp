@@ -217,6 +217,15 @@ void write_deck_file(const std::string& path, const std::string& text, const std
   if (ec) throw std::runtime_error(who + ": cannot rename " + partial + ": " + ec.message());
 }
 
+std::string deck_material_lines(const std::string& material, double young_modulus,
+                                double poisson_ratio, double density,
+                                const std::string& clamped) {
+  return "*MATERIAL, NAME=" + material + "\n*ELASTIC\n" + deck_number(young_modulus) + ", " +
+         deck_number(poisson_ratio) + "\n*DENSITY\n" + deck_number(density) +
+         "\n*SOLID SECTION, ELSET=EALL, MATERIAL=" + material + "\n*BOUNDARY\n" + clamped +
+         ", 1, 3\n";
+}
+
 void write_deck_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes) {
   const auto coordinate = [](double x) {
     char buffer[32];
@@ -481,9 +490,8 @@ std::set<long> check_elements(const GmshMesh& mesh, double tol, std::string& wha
 
 /// The deck's lines after the node sets: material, section, clamping.
 std::string material_and_clamping(const GmshBladeSpec& spec) {
-  return "*MATERIAL, NAME=BLADE_MATERIAL\n*ELASTIC\n" + number(spec.young_modulus) + ", " +
-         number(spec.poisson_ratio) + "\n*DENSITY\n" + number(spec.density) +
-         "\n*SOLID SECTION, ELSET=EALL, MATERIAL=BLADE_MATERIAL\n*BOUNDARY\nROOT, 1, 3\n";
+  return deck_material_lines("BLADE_MATERIAL", spec.young_modulus, spec.poisson_ratio,
+                             spec.density, "ROOT");
 }
 
 /// The deck: header comment, nodes, elements, node sets, material, section

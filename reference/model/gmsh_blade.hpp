@@ -236,6 +236,11 @@ void write_deck_file(const std::string& path, const std::string& text, const std
 void write_deck_nodes(std::ostream& out, const std::map<long, Eigen::Vector3d>& nodes);
 /// *ELEMENT, TYPE=C3D10, ELSET=EALL and the elements (number, 10 nodes).
 void write_deck_c3d10(std::ostream& out, const std::vector<std::array<long, 11>>& elements);
+/// An isotropic elastic material, its solid section on ELSET EALL and the
+/// node set `clamped` held in ux, uy, uz: the lines every rsi gmsh deck
+/// ends with.
+std::string deck_material_lines(const std::string& material, double young_modulus,
+                                double poisson_ratio, double density, const std::string& clamped);
 /// *NSET, NSET=NAME and the numbers, 8 a line.
 void write_deck_node_set(std::ostream& out, const std::string& name,
                          const std::vector<long>& nodes);

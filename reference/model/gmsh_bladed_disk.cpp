@@ -55,9 +55,7 @@ Eigen::Vector3d turned(const Eigen::Vector3d& p, double angle) {
 }
 
 std::string material_lines(const GmshBladeSpec& b) {
-  return "*MATERIAL, NAME=DISK_MATERIAL\n*ELASTIC\n" + deck_number(b.young_modulus) + ", " +
-         deck_number(b.poisson_ratio) + "\n*DENSITY\n" + deck_number(b.density) +
-         "\n*SOLID SECTION, ELSET=EALL, MATERIAL=DISK_MATERIAL\n*BOUNDARY\nBORE, 1, 3\n";
+  return deck_material_lines("DISK_MATERIAL", b.young_modulus, b.poisson_ratio, b.density, "BORE");
 }
 
 } // namespace

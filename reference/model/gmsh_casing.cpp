@@ -35,9 +35,8 @@ void require(const std::string& field, double value, double lo, double hi, bool 
 }
 
 std::string material_lines(const GmshCasingSpec& s) {
-  return "*MATERIAL, NAME=CASING_MATERIAL\n*ELASTIC\n" + deck_number(s.young_modulus) + ", " +
-         deck_number(s.poisson_ratio) + "\n*DENSITY\n" + deck_number(s.density) +
-         "\n*SOLID SECTION, ELSET=EALL, MATERIAL=CASING_MATERIAL\n*BOUNDARY\nFLANGE, 1, 3\n";
+  return deck_material_lines("CASING_MATERIAL", s.young_modulus, s.poisson_ratio, s.density,
+                             "FLANGE");
 }
 
 } // namespace
