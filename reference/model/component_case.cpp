@@ -916,4 +916,40 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
   return component;
 }
 
+FlexibleCasing load_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& options) {
+  if (!c.rubbing || !c.rubbing->casing)
+    throw std::invalid_argument("load_flexible_casing: the case has no rubbing.casing");
+  const RubbingSetup& r = *c.rubbing;
+  ComponentCase casing;
+  casing.case_path = c.case_path;
+  casing.name = c.name + "-casing";
+  casing.source = ComponentSource::gmsh_casing;
+  casing.gmsh_casing = *r.casing;
+  casing.boundary_node_set = "INNER";
+  casing.units = c.units;
+  casing.lumped_mass = c.lumped_mass;
+  ComponentLoadOptions own = options;
+  own.source_override.clear();
+  // The casing's own loader names its keys as a component's: here they are
+  // rubbing.casing's.
+  const auto renamed = [](std::string what) {
+    what = replace_all(what, "component.source.gmsh_casing", "rubbing.casing.gmsh_casing");
+    return replace_all(what, "component.boundary.node_set", "rubbing.casing (its node set INNER)");
+  };
+  try {
+    const ComponentDeck deck = component_deck(casing, own);
+    std::optional<CasingSurface> surface;
+    try {
+      surface.emplace(deck.deck, r.casing_surface);
+    } catch (const ImportError& e) {
+      throw CaseError(c.case_path + ": key 'rubbing.casing.surface': " + e.what());
+    }
+    return FlexibleCasing{load_component(casing, own), std::move(*surface)};
+  } catch (const CaseError& e) {
+    throw CaseError(renamed(e.what()), e.advice());
+  } catch (const ImportError& e) {
+    throw ImportError(renamed(e.what()), e.advice());
+  }
+}
+
 } // namespace rsi

@@ -46,6 +46,7 @@
 #include "component.hpp"
 #include "gmsh_blade.hpp"
 #include "gmsh_bladed_disk.hpp"
+#include "casing_surface.hpp"
 #include "gmsh_casing.hpp"
 
 namespace rsi {
@@ -223,5 +224,16 @@ ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions&
 /// Builds the component: runs ccx (cached) on a deck, or reads a folder.
 /// Throws ImportError (bad files, missing ccx) or CaseError.
 Component load_component(const ComponentCase& c, const ComponentLoadOptions& options);
+
+/// The flexible casing of rubbing.casing (issue 27): the gmsh ring's
+/// component (ccx's K and M, the mass lumped as the rotor's) and its contact
+/// surface (casing_surface.hpp). Messages name the keys under
+/// rubbing.casing; a source override (--source) is the rotor's, not the
+/// casing's. `c` must have rubbing.casing (std::invalid_argument otherwise).
+struct FlexibleCasing {
+  Component component;
+  CasingSurface surface;
+};
+FlexibleCasing load_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& options);
 
 } // namespace rsi

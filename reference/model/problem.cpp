@@ -164,42 +164,12 @@ ProblemLiner problem_liner(const ComponentCase& c, const LinerSetup& setup, cons
 namespace {
 
 /// The flexible casing of rubbing.casing beside the rotor: structure 1, its
-/// contact surface, the solid-casing law. Its model's messages name the
-/// case's keys under rubbing.casing; a source override (--source) is the
-/// rotor's, not the casing's.
-void load_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& load, Problem& p) {
+/// contact surface, the solid-casing law, the load on it.
+void add_flexible_casing(const ComponentCase& c, const ComponentLoadOptions& load, Problem& p) {
   const RubbingSetup& r = *c.rubbing;
-  ComponentCase casing;
-  casing.case_path = c.case_path;
-  casing.name = c.name + "-casing";
-  casing.source = ComponentSource::gmsh_casing;
-  casing.gmsh_casing = *r.casing;
-  casing.boundary_node_set = "INNER";
-  casing.units = c.units;
-  casing.lumped_mass = c.lumped_mass;
-  ComponentLoadOptions own = load;
-  own.source_override.clear();
-  const auto renamed = [](std::string what) {
-    for (const auto& [from, to] :
-         {std::pair<std::string, std::string>{"component.source.gmsh_casing", "rubbing.casing.gmsh_casing"},
-          {"component.boundary.node_set", "rubbing.casing (its node set INNER)"}})
-      for (size_t at = what.find(from); at != std::string::npos; at = what.find(from, at + to.size()))
-        what.replace(at, from.size(), to);
-    return what;
-  };
-  try {
-    const ComponentDeck deck = component_deck(casing, own);
-    try {
-      p.casing.surface.emplace(deck.deck, r.casing_surface);
-    } catch (const ImportError& e) {
-      throw CaseError(c.case_path + ": key 'rubbing.casing.surface': " + e.what());
-    }
-    p.structures.push_back(load_component(casing, own));
-  } catch (const CaseError& e) {
-    throw CaseError(renamed(e.what()), e.advice());
-  } catch (const ImportError& e) {
-    throw ImportError(renamed(e.what()), e.advice());
-  }
+  FlexibleCasing casing = load_flexible_casing(c, load);
+  p.structures.push_back(std::move(casing.component));
+  p.casing.surface.emplace(std::move(casing.surface));
   p.casing.rigid = false;
   p.casing.structure = 1;
   p.contact.kind = ContactKind::solid_casing;
@@ -268,7 +238,7 @@ Problem component_problem(const ComponentCase& c, const ComponentLoadOptions& lo
     p.outputs.response_dof = points.response_dof;
     p.outputs.response_name = std::move(points.response_name);
     // Last: the casing joins `structures`, which moves the rotor (`comp`).
-    if (r.casing) load_flexible_casing(c, load, p);
+    if (r.casing) add_flexible_casing(c, load, p);
   }
   p.component_case = c;
   return p;
