@@ -64,20 +64,15 @@ StructureContact::StructureContact(const Problem& problem, double rotation_speed
     const Component& casing = problem.structures.at(1);
     const int offset = problem.offset(1);
     // Each casing node's ux, uy, uz (a clamped node has none: not in the map).
-    std::map<int, std::array<int, 3>> casing_dofs;
-    std::map<int, unsigned> found; // bit k: translation k seen
-    for (int i = 0; i < casing.n_dofs(); ++i) {
-      const DofInfo& d = casing.dofs[static_cast<size_t>(i)];
-      const int k = d.kind == "ux" ? 0 : d.kind == "uy" ? 1 : d.kind == "uz" ? 2 : -1;
-      if (k < 0) continue;
-      casing_dofs[d.node][static_cast<size_t>(k)] = offset + i;
-      found[d.node] |= 1u << k;
-    }
-    for (const auto& [node, bits] : found)
-      if (bits != 7u)
-        throw std::invalid_argument(problem.source + ": casing node " + std::to_string(node) +
-                                    " lacks one of its three translations (a partly clamped "
-                                    "contact node is not taken)");
+    std::map<int, std::array<int, 3>> casing_dofs = node_translations(casing.dofs);
+    for (auto& [node, dofs] : casing_dofs)
+      for (int& dof : dofs) {
+        if (dof < 0)
+          throw std::invalid_argument(problem.source + ": casing node " + std::to_string(node) +
+                                      " lacks one of its three translations (a partly clamped "
+                                      "contact node is not taken)");
+        dof += offset;
+      }
     auto law = std::make_shared<const SolidCasingContact>(
         rigid_surface_nodes(problem.structures.front(), c.contact_nodes), *problem.casing.surface,
         std::move(casing_dofs), rotation_speed, c.friction_coefficient);

@@ -29,13 +29,7 @@ Eigen::VectorXd casing_pressure_forces(const CasingSurface& surface, const Compo
   if (nodal_diameters < 0)
     throw std::invalid_argument("casing_pressure_forces: nodal_diameters = " +
                                 std::to_string(nodal_diameters) + ", allowed >= 0");
-  std::map<int, std::array<int, 3>> dofs; // node -> ux, uy, uz (-1: none)
-  for (int i = 0; i < casing.n_dofs(); ++i) {
-    const DofInfo& d = casing.dofs[static_cast<size_t>(i)];
-    const int k = d.kind == "ux" ? 0 : d.kind == "uy" ? 1 : d.kind == "uz" ? 2 : -1;
-    if (k < 0) continue;
-    dofs.emplace(d.node, std::array<int, 3>{-1, -1, -1}).first->second[static_cast<size_t>(k)] = i;
-  }
+  const std::map<int, std::array<int, 3>> dofs = node_translations(casing.dofs);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(casing.n_dofs());
   for (int face = 0; face < surface.n_faces(); ++face) {
     const std::array<Eigen::Vector3d, 6>& x = surface.face_positions(face);

@@ -193,10 +193,15 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   RunSummary& s = result.summary;
   s.method = "full";
   s.n_dofs = static_cast<int>(k_all.rows());
-  double omega_max = point.omega_max;
-  if (!(omega_max > 0.0))
-    for (const Component& part : problem.structures)
-      omega_max = std::max(omega_max, max_angular_frequency(part.stiffness, part.mass));
+  // The rotor's own omega_max, and the system's (the largest of its structures').
+  const double omega_rotor =
+      flexible || !(point.omega_max > 0.0) ? max_angular_frequency(rotor.stiffness, rotor.mass)
+                                           : point.omega_max;
+  double omega_max = point.omega_max > 0.0 ? point.omega_max : omega_rotor;
+  if (flexible && !(point.omega_max > 0.0))
+    for (size_t i = 1; i < problem.structures.size(); ++i)
+      omega_max = std::max(omega_max, max_angular_frequency(problem.structures[i].stiffness,
+                                                            problem.structures[i].mass));
   const double sample_dt = rule.sample_step(omega);
   const double k = rule.steps_per_sample(sample_dt, 2.0 / omega_max);
   const double steps = rule.samples(revolutions) * k;
@@ -206,8 +211,7 @@ RunResult run_per_revolution(const Problem& problem, const RunOptions& options,
   const double dt = sample_dt / k;
   check_time_step(dt, omega_max, options.force, s);
   // The rotor's own limit (a reduced run's is compared with it).
-  s.bladed_disk_critical_dt =
-      flexible ? 2.0 / max_angular_frequency(rotor.stiffness, rotor.mass) : s.critical_dt;
+  s.bladed_disk_critical_dt = flexible ? 2.0 / omega_rotor : s.critical_dt;
 
   // The response dof rides in the rows as the one "tip", gathered on output
   // steps.
