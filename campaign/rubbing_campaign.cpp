@@ -8,10 +8,10 @@ namespace rsi {
 
 std::vector<RubbingCampaignRun> rubbing_campaign_runs(const RubbingSetup& setup) {
   std::vector<RubbingCampaignRun> runs;
-  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}});
+  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}, {}});
   for (const RubbingRuns& item : setup.campaign)
     for (int modes : item.modes)
-      runs.push_back({item.method, modes, {}, {}, {}, {}});
+      runs.push_back({item.method, modes, {}, {}, {}, {}, {}});
   return runs;
 }
 
@@ -23,10 +23,12 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
                                 const ComponentRowSink& sink,
                                 const std::function<void()>& checkpoint,
                                 const std::function<void(double)>& progress) {
+  const bool keep_gaps = model.setup().casing.has_value();
   const ComponentRowSink keep = [&](const HistoryRow& row, double response) {
     sink(row, response);
     entry.response.push_back(response);
     entry.lambda_n.push_back(row.lambda);
+    if (keep_gaps) entry.gap.push_back(row.gap);
   };
   RubbingRunOptions o;
   o.method = entry.method;
@@ -63,6 +65,17 @@ RubbingErrorNorms rubbing_error_norms(const RubbingCampaignRun& r, const Rubbing
   }
   RubbingErrorNorms e;
   if (n == 0) return e;
+  if (r.gap.size() >= n && ref.gap.size() >= n) {
+    double dg2 = 0, g2 = 0, dgi = 0, gi = 0;
+    for (size_t j = 0; j < n; ++j) {
+      dg2 += (r.gap[j] - ref.gap[j]).squaredNorm();
+      g2 += ref.gap[j].squaredNorm();
+      dgi = std::max(dgi, (r.gap[j] - ref.gap[j]).cwiseAbs().maxCoeff());
+      gi = std::max(gi, ref.gap[j].cwiseAbs().maxCoeff());
+    }
+    e.e2_gap = g2 > 0 ? std::sqrt(dg2 / g2) : NAN;
+    e.einf_gap = gi > 0 ? dgi / gi : NAN;
+  }
   e.e2_response = std::sqrt(dx2 / x2);
   e.einf_response = dxi / xi;
   e.e2_lambda = l2 > 0 ? std::sqrt(dl2 / l2) : NAN;

@@ -35,6 +35,9 @@ struct RubbingCampaignRun {
   RubbingRun run;
   std::vector<double> response;
   std::vector<Eigen::VectorXd> lambda_n;
+  /// Every contact's gap per row, kept against the flexible casing only
+  /// (the issue-27 norms; a rigid casing's campaign keeps its memory).
+  std::vector<Eigen::VectorXd> gap;
   std::string error; ///< why the run could not be made, or its stop (empty: completed)
 };
 
@@ -57,6 +60,9 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
 struct RubbingErrorNorms {
   double e2_response = NAN, einf_response = NAN, e2_lambda = NAN, einf_lambda = NAN;
   double e2_wear = NAN, einf_wear = NAN; ///< NaN without a liner or with unequal windows
+  /// Over every contact's gap: sqrt(sum |g - g_ref|^2 / sum |g_ref|^2) and
+  /// max |g - g_ref| / max |g_ref|; NaN unless both runs kept their gaps.
+  double e2_gap = NAN, einf_gap = NAN;
 };
 
 /// The norms above of `r` against `ref` over their common rows (NaN with

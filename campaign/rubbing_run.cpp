@@ -24,6 +24,7 @@
 #include "reduction.hpp"
 #include "rigid_casing.hpp"
 #include "rubbing_points.hpp"
+#include "solid_casing_part.hpp"
 
 namespace rsi {
 namespace {
@@ -186,14 +187,48 @@ std::optional<ComponentLiner> component_liner(const Problem& problem) {
   return liner;
 }
 
+/// The flexible casing's modes plus the static correction for its load;
+/// `key` names where the count came from.
+CasingBasis solid_casing_basis(const RubbingModel& model, int modes, const std::string& key) {
+  const Problem& p = model.problem;
+  const Component& casing = p.structures.at(static_cast<size_t>(p.casing.structure));
+  Eigen::VectorXd load;
+  if (p.forcing.any()) load = p.forcing.force.tail(casing.n_dofs());
+  if (modes >= casing.n_dofs())
+    throw CaseError(p.source + ": " + key + ": " + std::to_string(modes) +
+                    ", allowed fewer than the casing's " + std::to_string(casing.n_dofs()) +
+                    " dofs");
+  return reduce_solid_casing(casing, modes, load);
+}
+
+/// The flexible casing's part of a reduced run at step dt: the tips of
+/// `tips`, the casing's surface, dofs, basis and load.
+std::unique_ptr<ComponentCasingPart> solid_casing_part(const RubbingModel& model,
+                                                       const RigidCasing& tips,
+                                                       const CasingBasis& basis, double dt) {
+  const Problem& p = model.problem;
+  const Component& casing = p.structures.at(static_cast<size_t>(p.casing.structure));
+  SolidCasingLoad load;
+  if (p.forcing.any()) {
+    load.force = p.forcing.force.tail(casing.n_dofs());
+    load.duration = p.forcing.until;
+  }
+  return std::make_unique<SolidCasingPart>(tips, static_cast<int>(model.component().boundary.size()),
+                                           dt, *p.casing.surface, node_translations(casing.dofs),
+                                           basis, std::move(load));
+}
+
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup();
-  if (setup.casing)
-    throw CaseError(model.problem.source + ": key 'rubbing.casing': --method " + options.method +
-                    ": the reduced runs against the flexible casing are not written yet "
-                    "(issue 27); run --method full");
   const double omega = run_speed(model, options);
+  // The flexible casing's basis first (its count checked before the
+  // rotor's basis is built); its build time is added to basis_seconds.
+  std::optional<CasingBasis> casing_basis;
+  if (setup.casing)
+    casing_basis = options.casing_modes > 0
+                       ? solid_casing_basis(model, options.casing_modes, "--casing-modes")
+                       : solid_casing_basis(model, setup.casing_modes, "key 'rubbing.casing.modes'");
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<ReducedBasis> own;
   if (options.basis == nullptr)
@@ -212,8 +247,16 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
                                 ": with rotation effects the model holds K(Omega) at the case's "
                                 "speed only");
   const RigidCasing casing =
-      rigid_casing_of(model.component(), model.contact_nodes(), gap, omega,
-                      model.problem.contact.sliding_speed_at(omega), growth);
+      setup.casing
+          ? rigid_casing_of(model.component(), model.contact_nodes(), CasingGap{}, omega, omega)
+          : rigid_casing_of(model.component(), model.contact_nodes(), gap, omega,
+                            model.problem.contact.sliding_speed_at(omega), growth);
+  // The integrator against the rigid casing, or against the flexible
+  // casing's part made at the integrator's step.
+  const auto integrator_of = [&](const ComponentIntegratorOptions& io) {
+    if (!casing_basis) return ComponentIntegrator(basis, casing, io);
+    return ComponentIntegrator(basis, solid_casing_part(model, casing, *casing_basis, io.dt), io);
+  };
   ComponentIntegratorOptions o;
   o.mu = setup.friction_coefficient;
   o.liner = component_liner(model.problem); // checked by the loader (problem.cpp)
@@ -222,7 +265,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   const double sample_dt = model.problem.steps.sample_step(omega);
   o.dt = sample_dt;
   o.force_step = true; // a probe, only for omega_max
-  const double free_critical_dt = ComponentIntegrator(basis, casing, o).critical_dt();
+  const double free_critical_dt = integrator_of(o).critical_dt();
   const double critical_dt =
       basis.massless_boundary ? std::min(free_critical_dt, held_boundary_critical_dt(basis))
                               : free_critical_dt;
@@ -236,7 +279,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   run.steps_per_sample = static_cast<int>(counts.steps_per_sample);
   o.dt = sample_dt / run.steps_per_sample;
   o.force_step = options.force;
-  ComponentIntegrator integrator(basis, casing, o);
+  ComponentIntegrator integrator = integrator_of(o);
   ComponentRunOptions ro;
   ro.steps = counts.steps;
   ro.output_every = counts.steps_per_sample * setup.output_every;
@@ -267,6 +310,13 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   const double wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run_start).count();
   run.summary = summary_of(c, options.method, basis.n_reduced(), max_lambda, basis_seconds);
+  if (casing_basis) {
+    // The system's size and its casing's basis, as the paper case's summaries.
+    run.summary.n_dofs += casing_basis->size();
+    run.summary.casing_basis = casing_basis->name();
+    run.summary.basis_seconds += casing_basis->build_seconds;
+    run.summary.final_external_work = c.final_external_work;
+  }
   run.summary.wall_seconds = wall_seconds;
   if (const LinerContactSolve* liner = integrator.liner()) {
     const AbradableCells& cells = liner->cells();

@@ -65,6 +65,9 @@ struct RubbingRunOptions {
   /// Omega [rad/s] in place of rubbing.rotation_speed (0: the case's): the
   /// gap's phase, the sliding and the period T (rsi sweep's speeds).
   double rotation_speed = 0.0;
+  /// Against the flexible casing: its modes kept in place of
+  /// rubbing.casing.modes (0: the case's).
+  int casing_modes = 0;
   /// A reduced method's basis built once for several runs (rsi sweep's
   /// speeds share it: the rotation enters only through the contact); it
   /// must be reduce()'s of this model, method and modes. nullptr: built here.

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
 
+#include "cholmod_factor.hpp"
 #include "modal_analysis.hpp"
 
 namespace rsi {
@@ -27,6 +28,36 @@ Eigen::VectorXd orthogonal_part(const Eigen::MatrixXd& phi, const Eigen::SparseM
 
 double mass_norm(const Eigen::SparseMatrix<double>& mass, const Eigen::VectorXd& x) {
   return std::sqrt(std::max(0.0, x.dot(mass * x)));
+}
+
+/// The static correction x = K^-1 F added to `basis` (header: kept only
+/// when its M-orthogonal part is a direction), by a Rayleigh-Ritz step.
+void add_static_correction(CasingBasis& basis, const Eigen::SparseMatrix<double>& stiffness,
+                           const Eigen::SparseMatrix<double>& mass, const Eigen::VectorXd& x) {
+  const auto n = static_cast<int>(basis.shapes.rows());
+  const int modes = basis.size();
+  const Eigen::VectorXd y = orthogonal_part(basis.shapes, mass, x);
+  const double size = mass_norm(mass, x);
+  const double kept = mass_norm(mass, y);
+  if (!(kept > std::sqrt(std::numeric_limits<double>::epsilon()) * size)) return;
+  // Rayleigh-Ritz on [Phi, y / |y|_M]: the projected mass is I to
+  // round-off, the projected stiffness diag(omega^2) bordered by one row.
+  Eigen::MatrixXd v(n, modes + 1);
+  v << basis.shapes, y / kept;
+  const Eigen::MatrixXd kv = stiffness * v;
+  const Eigen::MatrixXd mv = mass * v;
+  Eigen::MatrixXd k_small = v.transpose() * kv;
+  Eigen::MatrixXd m_small = v.transpose() * mv;
+  k_small = 0.5 * (k_small + k_small.transpose()).eval();
+  m_small = 0.5 * (m_small + m_small.transpose()).eval();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(k_small, m_small);
+  if (ritz.info() != Eigen::Success)
+    throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction "
+                     "failed",
+                     remedied_by({Remedy::fewer_casing_modes}));
+  basis.shapes = v * ritz.eigenvectors();
+  basis.omega_squared = ritz.eigenvalues();
+  basis.static_correction = true;
 }
 
 } // namespace
@@ -60,30 +91,41 @@ CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd
       throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized "
                        "(the case's check of K should have refused it); change "
                        "casing.section.thickness or casing.n_elements");
-    const Eigen::VectorXd x = k.solve(forcing);
-    const Eigen::VectorXd y = orthogonal_part(m.shapes, casing.mass, x);
-    const double size = mass_norm(casing.mass, x);
-    const double kept = mass_norm(casing.mass, y);
-    if (kept > std::sqrt(std::numeric_limits<double>::epsilon()) * size) {
-      // Rayleigh-Ritz on [Phi, y / |y|_M]: the projected mass is I to
-      // round-off, the projected stiffness diag(omega^2) bordered by one row.
-      Eigen::MatrixXd v(n, modes + 1);
-      v << m.shapes, y / kept;
-      const Eigen::MatrixXd kv = casing.stiffness * v;
-      const Eigen::MatrixXd mv = casing.mass * v;
-      Eigen::MatrixXd k_small = v.transpose() * kv;
-      Eigen::MatrixXd m_small = v.transpose() * mv;
-      k_small = 0.5 * (k_small + k_small.transpose()).eval();
-      m_small = 0.5 * (m_small + m_small.transpose()).eval();
-      const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ritz(k_small, m_small);
-      if (ritz.info() != Eigen::Success)
-        throw ModalError("casing reduction: the Rayleigh-Ritz step of the static correction "
-                         "failed",
-                         remedied_by({Remedy::fewer_casing_modes}));
-      basis.shapes = v * ritz.eigenvectors();
-      basis.omega_squared = ritz.eigenvalues();
-      basis.static_correction = true;
-    }
+    add_static_correction(basis, casing.stiffness, casing.mass, k.solve(forcing));
+  }
+  basis.build_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return basis;
+}
+
+CasingBasis reduce_solid_casing(const Component& casing, int modes,
+                                const Eigen::VectorXd& forcing) {
+  const int n = casing.n_dofs();
+  // The sparse eigensolver needs fewer modes than dofs.
+  if (modes < 1 || modes >= n)
+    throw std::invalid_argument("casing modes: must be in [1, " + std::to_string(n - 1) +
+                                "] (fewer than the casing's " + std::to_string(n) +
+                                " dofs), got " + std::to_string(modes));
+  if (forcing.size() != 0 && forcing.size() != n)
+    throw std::invalid_argument("reduce_solid_casing: the forcing has " +
+                                std::to_string(forcing.size()) + " entries, the casing " +
+                                std::to_string(n) + " dofs");
+  const auto start = std::chrono::steady_clock::now();
+  const Modes m = lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::automatic);
+  CasingBasis basis;
+  basis.n_modes = modes;
+  basis.shapes = m.shapes;
+  basis.omega_squared = m.omega_squared;
+  if (forcing.size() == n && forcing.any()) {
+    CholmodFactor k;
+    const Eigen::SparseMatrix<double> lower = casing.stiffness.triangularView<Eigen::Lower>();
+    if (k.factorize(lower) != CholmodFactor::Status::successful)
+      throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized (" +
+                       k.message() + "); clamp it (rubbing.casing.gmsh_casing.clamped_flanges)");
+    Eigen::VectorXd x(n);
+    if (!k.solve(CholmodFactor::System::a, forcing, x))
+      throw ModalError("casing reduction: CHOLMOD's solve with the casing's stiffness failed");
+    add_static_correction(basis, casing.stiffness, casing.mass, x);
   }
   basis.build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -29,6 +29,7 @@
 #include <Eigen/Core>
 
 #include "casing.hpp"
+#include "component.hpp"
 
 namespace rsi {
 
@@ -52,5 +53,13 @@ struct CasingBasis {
 /// dofs; zero: none). Throws std::invalid_argument for a count out of
 /// range and ModalError when the eigensolver fails.
 CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd& forcing);
+
+/// The same for a 3D casing (issue 27: the flexible casing of
+/// reference/model/gmsh_casing, or one's own deck): its lowest `modes`
+/// modes by the sparse eigensolver (1 <= modes < its dofs) plus the static
+/// correction for `forcing` (its dofs; empty or zero: none), K_c x = F by
+/// CHOLMOD. Throws std::invalid_argument for a count or size out of range
+/// and ModalError when the eigensolver or the factorization fails.
+CasingBasis reduce_solid_casing(const Component& casing, int modes, const Eigen::VectorXd& forcing);
 
 } // namespace rsi

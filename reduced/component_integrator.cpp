@@ -1,5 +1,6 @@
 #include "component_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -33,6 +34,13 @@ std::unique_ptr<ComponentContactSolve> contact_solve_of(const RigidCasing& casin
       options.liner->solve);
 }
 
+/// Whether a predicted gap is negative: the only steps whose solve reads W.
+bool closing(const Eigen::VectorXd& predicted) {
+  for (Eigen::Index k = 0; k < predicted.size(); k += 3)
+    if (predicted(k) < 0.0) return true;
+  return false;
+}
+
 } // namespace
 
 ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidCasing& casing,
@@ -42,6 +50,30 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
   if (!(options.dt > 0.0) || !std::isfinite(options.dt))
     throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
                                 ", allowed a finite value > 0");
+  m_casing = std::make_unique<RigidCasingPart>(
+      casing, static_cast<int>(basis.boundary_position.size()), options.dt);
+  init(basis, options);
+}
+
+ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis,
+                                         std::unique_ptr<ComponentCasingPart> casing,
+                                         const ComponentIntegratorOptions& options) {
+  if (!casing) throw std::invalid_argument(kWhere + "no casing part");
+  if (options.liner)
+    throw std::invalid_argument(kWhere + "a liner is the rigid casing's; allowed none here");
+  if (!(options.dt > 0.0) || !std::isfinite(options.dt))
+    throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
+                                ", allowed a finite value > 0");
+  auto coulomb = std::make_unique<CoulombNodeSolve>(casing->n_contacts(), options.dt, options.mu,
+                                                    options.coulomb, options.closing_subset);
+  m_coulomb = coulomb.get();
+  m_contact = std::move(coulomb);
+  m_casing = std::move(casing);
+  init(basis, options);
+}
+
+void ComponentIntegrator::init(const ReducedBasis& basis,
+                               const ComponentIntegratorOptions& options) {
   m_dt = options.dt;
   m_r = basis.n_reduced();
   const int nb = static_cast<int>(basis.boundary_position.size());
@@ -49,7 +81,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
     if (b < 0 || b >= m_r)
       throw std::invalid_argument(kWhere + "boundary position " + std::to_string(b) +
                                   " outside the basis' " + std::to_string(m_r) + " coordinates");
-  m_nc = casing.n_contacts();
+  m_nc = m_casing->n_contacts();
   if (m_nc < 1)
     throw std::invalid_argument(kWhere + "the casing has no contact node, allowed >= 1");
   if (options.damping.size() != 0) {
@@ -72,9 +104,14 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
         kWhere + "force_frequency = " + message_number(options.force_frequency) +
         ", force_phase = " + message_number(options.force_phase) + ", allowed finite values");
 
-  m_casing = std::make_unique<RigidCasingPart>(casing, nb, m_dt);
+  for (int c = 0; c < m_nc; ++c)
+    for (int k : m_casing->tips().boundary_index(c))
+      if (k >= nb)
+        throw std::invalid_argument(kWhere + "contact node " + std::to_string(c) +
+                                    ": boundary index " + std::to_string(k) + " >= the basis' " +
+                                    std::to_string(nb) + " boundary coordinates");
 
-  m_omega_max = reduced_omega_max(basis);
+  m_omega_max = std::max(reduced_omega_max(basis), m_casing->omega_max());
   if (!(m_omega_max > 0.0) || !std::isfinite(m_omega_max))
     throw ComponentIntegrationError(kWhere + "omega_max of the reduced model is " +
                                     message_number(m_omega_max) + ", allowed a finite value > 0");
@@ -92,6 +129,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
   else
     m_rotor = std::make_unique<MassCarryingBoundaryPart>(basis, options, m_casing->rows());
   m_contact->set_contact_matrix(m_rotor->contact_matrix());
+  if (m_casing->flexible()) m_w_rotor = m_contact->contact_matrix();
   m_lambda.setZero(3 * m_nc);
 }
 
@@ -107,11 +145,13 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
   m_lambda.setZero();
   m_wall_work = 0.0;
   m_contact->start();
+  m_casing->start();
   m_rotor->start(q0);
   if (m_rotor->contact_at_next_level()) {
     // The contact at t = 0 on the trial boundary, its slip relative to the
-    // structure at rest: the casing's own increment over the step before.
-    m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), 0.0);
+    // structure at rest: the casing's own increment over the step before
+    // (a flexible casing held where it is: W the rotor's).
+    m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), 0.0, 0.0);
     StepReport unused;
     m_contact->solve(m_casing->prediction(), m_n + 1, unused);
     m_lambda = m_contact->lambda_next();
@@ -129,10 +169,16 @@ StepReport ComponentIntegrator::step() {
   StepReport report;
   const double t_next = (m_n + 1) * m_dt;
   m_rotor->predict(m_lambda, time(), t_next);
-  m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), t_next);
+  m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), time(), t_next);
+  if (m_coulomb != nullptr && closing(m_casing->prediction())) {
+    m_w_step = m_w_rotor;
+    m_casing->add_flexibility(m_w_step);
+    m_coulomb->replace_contact_matrix(m_w_step);
+  }
   m_contact->solve(m_casing->prediction(), m_n + 1, report);
   const Eigen::VectorXd& solved = m_contact->lambda_next();
   m_rotor->correct(solved);
+  m_casing->correct(solved);
   // Work of (*) at time n: lambda_n . B (x_{n+1} - x_{n-1}) / 2, lambda_n the
   // solved multipliers when they enforce the contact at x_{n+1}, the previous
   // ones when the step's balance is at the new level.
@@ -142,7 +188,7 @@ StepReport ComponentIntegrator::step() {
     if (m_liner) {
       // The casing surface's own move under the normal forces, for the
       // unmatched work (liner_unmatched_work()).
-      const RigidCasing& casing = m_casing->casing();
+      const RigidCasing& casing = m_casing->tips();
       for (int c = 0; c < m_nc; ++c)
         m_wall_work -= 0.5 * lambda_n(3 * c) *
                        (casing.imposed_gap(c, t_next) - casing.imposed_gap(c, t_next - 2.0 * m_dt));
@@ -151,9 +197,10 @@ StepReport ComponentIntegrator::step() {
   m_rotor->add_step_work();
   m_lambda = solved;
   m_rotor->advance();
+  m_casing->advance();
   m_casing->gaps_at(m_rotor->boundary(), t_next);
   ++m_n;
-  if (!m_rotor->finite() || !m_casing->gap().allFinite())
+  if (!m_rotor->finite() || !m_casing->finite() || !m_casing->gap().allFinite())
     throw ComponentIntegrationError(kWhere + "step " + std::to_string(m_n) +
                                         " (t = " + message_number(time()) +
                                         " s): the state is not finite (blow-up)",
@@ -162,13 +209,20 @@ StepReport ComponentIntegrator::step() {
 }
 
 double ComponentIntegrator::energy() const {
+  if (m_casing->flexible()) return m_rotor->energy() + m_casing->energy();
   return m_liner ? m_rotor->energy() + m_liner->elastic_energy() : m_rotor->energy();
 }
 
 double ComponentIntegrator::contact_work() const {
+  if (m_casing->flexible()) return m_contact->contact_work() + m_casing->contact_work();
   return m_liner ? m_contact->contact_work() + (m_liner->elastic_energy() - m_initial_bar_energy) +
                        m_liner->plastic_work()
                  : m_contact->contact_work();
+}
+
+double ComponentIntegrator::external_work() const {
+  if (m_casing->flexible()) return m_rotor->external_work() + m_casing->external_work();
+  return m_rotor->external_work();
 }
 
 double ComponentIntegrator::plastic_work() const {

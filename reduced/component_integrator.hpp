@@ -33,10 +33,17 @@
 //     (CB, CCM, Guyan: mass_carrying_boundary_part.hpp) or 2. a massless
 //     boundary (MacNeal: massless_boundary_part.hpp), chosen by
 //     ReducedBasis::massless_boundary;
-//   the rigid casing part (rigid_casing_part.hpp): B_B and the predicted
-//     gaps g~ and slips s~ at the trial boundary displacement u~_B;
+//   the casing part (component_casing_part.hpp): the rigid casing
+//     (rigid_casing_part.hpp: B_B and the predicted gaps g~ and slips s~ at
+//     the trial boundary displacement u~_B) or the flexible 3D casing in its
+//     modes (solid_casing_part.hpp: its own modal step beside the rotor's,
+//     its rows H on its modal coordinates, its share dt^2 H H^T of W, which
+//     changes every step, and its own energy and works, added to the
+//     rotor's);
 //   the Coulomb contact solve (coulomb_node_solve.hpp): [g; s] = [g~; s~] +
-//     W lambda on the closing contacts, W from the rotor part.
+//     W lambda on the closing contacts, W from the rotor part (plus the
+//     flexible casing's, formed on the steps where a contact closes: the
+//     only ones whose solve reads W).
 // A step: the rotor part predicts (with the multipliers of the step that
 // produced x_n), the casing part predicts [g~; s~] at its u~_B, the contact
 // solve finds lambda, the rotor part takes the correction, the works are
@@ -63,6 +70,7 @@
 
 #include <Eigen/Core>
 
+#include "component_casing_part.hpp"
 #include "component_integration_error.hpp"
 #include "component_integrator_options.hpp"
 #include "component_contact_solve.hpp"
@@ -86,13 +94,24 @@ public:
   /// factorization; dt >= 2/omega_max without force_step).
   ComponentIntegrator(const ReducedBasis& basis, const RigidCasing& casing,
                       const ComponentIntegratorOptions& options);
+  /// Against a casing part of its own (solid_casing_part.hpp: the flexible
+  /// 3D casing), made at options.dt; no liner. The critical step is the
+  /// smaller of the rotor's and the casing part's.
+  ComponentIntegrator(const ReducedBasis& basis, std::unique_ptr<ComponentCasingPart> casing,
+                      const ComponentIntegratorOptions& options);
 
   bool massless_boundary() const { return m_rotor->contact_at_next_level(); }
   double omega_max() const { return m_omega_max; }
   double critical_dt() const { return 2.0 / m_omega_max; }
   double dt() const { return m_dt; }
   int n_contacts() const { return m_nc; }
-  const RigidCasing& casing() const { return m_casing->casing(); }
+  /// The tips' frames, radii and angles (the rigid casing itself, or the
+  /// flexible casing's tips).
+  const RigidCasing& casing() const { return m_casing->tips(); }
+  /// The gap of contact c at time t with no displacement.
+  double rest_gap(int c, double t) const { return m_casing->rest_gap(c, t); }
+  /// The casing part (the flexible casing's modal state, for tests).
+  const ComponentCasingPart& casing_part() const { return *m_casing; }
 
   /// Zero initial conditions at t = 0 (the contact at t = 0 solved for a
   /// massless boundary).
@@ -135,7 +154,7 @@ public:
   /// liner.unmatched_work); 0 without a liner.
   double liner_unmatched_work() const;
   /// W_ext = sum_n f(t_n)^T (x_{n+1} - x_{n-1})/2 (0 without a force).
-  double external_work() const override { return m_rotor->external_work(); }
+  double external_work() const override;
   bool has_external_force() const { return m_rotor->has_external_force(); }
   /// f(t), r entries (zeros without a force).
   Eigen::VectorXd external_force(double t) const { return m_rotor->external_force(t); }
@@ -146,6 +165,9 @@ public:
   long sweeps() const { return m_contact->sweeps(); }
 
 private:
+  /// The constructors' common part, after m_casing is set.
+  void init(const ReducedBasis& basis, const ComponentIntegratorOptions& options);
+
   double m_dt = 0.0;
   double m_omega_max = 0.0;
   int m_r = 0, m_nc = 0;
@@ -154,7 +176,9 @@ private:
   LinerContactSolve* m_liner = nullptr; ///< m_contact when it is the liner's
   double m_wall_work = 0.0;             ///< -sum lambda_n (g0(t_{n+1}) - g0(t_{n-1})) / 2
   double m_initial_bar_energy = 0.0;    ///< the bars' elastic energy at the start (MacNeal in contact at t = 0)
-  std::unique_ptr<RigidCasingPart> m_casing;
+  std::unique_ptr<ComponentCasingPart> m_casing;
+  CoulombNodeSolve* m_coulomb = nullptr; ///< m_contact when W changes every step (flexible casing)
+  Eigen::MatrixXd m_w_rotor, m_w_step;  ///< flexible casing: the rotor's W, symmetrised; the step's
   std::unique_ptr<ComponentRotorPart> m_rotor;
   Eigen::VectorXd m_lambda; ///< the multipliers of the step that produced x_n
   double m_initial_energy = 0.0;

@@ -18,7 +18,7 @@ namespace {
 int runaway_contact(const ComponentIntegrator& integrator) {
   const RigidCasing& casing = integrator.casing();
   for (int c = 0; c < casing.n_contacts(); ++c)
-    if (!(std::abs(integrator.gap()(c) - casing.imposed_gap(c, integrator.time())) <=
+    if (!(std::abs(integrator.gap()(c) - integrator.rest_gap(c, integrator.time())) <=
           casing.radius(c)))
       return c;
   return -1;
@@ -77,7 +77,7 @@ public:
       const RigidCasing& casing = integrator.casing();
       m << "runaway at step " << n << " (t = " << integrator.time() << " s): contact node "
         << runaway + 1 << " moved "
-        << integrator.gap()(runaway) - casing.imposed_gap(runaway, integrator.time())
+        << integrator.gap()(runaway) - integrator.rest_gap(runaway, integrator.time())
         << " along its normal, more than its radius " << casing.radius(runaway)
         << " (the small-displacement model is left: an unstable step or a blow-up)";
       s.completed = false;

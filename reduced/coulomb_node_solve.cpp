@@ -27,6 +27,10 @@ void CoulombNodeSolve::set_contact_matrix(const Eigen::MatrixXd& w) {
   m_state.assign(m_nc, ReducedContactState::open);
 }
 
+void CoulombNodeSolve::replace_contact_matrix(const Eigen::MatrixXd& w) {
+  m_w = 0.5 * (w + w.transpose());
+}
+
 void CoulombNodeSolve::start() {
   m_contact_work = 0.0;
   m_sweeps = 0;

@@ -42,6 +42,9 @@ public:
   /// W of every step's problem (3 nc square), symmetrised here.
   void set_contact_matrix(const Eigen::MatrixXd& w) override;
   const Eigen::MatrixXd& contact_matrix() const override { return m_w; }
+  /// The step's W when it changes during a run (the flexible casing's),
+  /// symmetrised; the multipliers and states kept (the warm start).
+  void replace_contact_matrix(const Eigen::MatrixXd& w);
 
   /// Before the first step: every multiplier zero, every contact open, no work, no sweeps.
   void start() override;

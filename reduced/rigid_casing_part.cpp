@@ -39,7 +39,7 @@ void RigidCasingPart::gaps_at(const Eigen::VectorXd& u_boundary, double t) {
 }
 
 void RigidCasingPart::predict(const Eigen::VectorXd& u_trial, const Eigen::VectorXd& u_now,
-                              double t_next) {
+                              double /*t_n*/, double t_next) {
   // [g~; s~] per contact: g(t_{n+1}) + e_n.u~, [e_t1; e_t2](u~ - u_n) + (0, r Omega dt).
   for (int c = 0; c < m_nc; ++c) {
     const Eigen::Matrix3d& f = m_casing.frame(c);

@@ -17,29 +17,32 @@
 
 #include <Eigen/Core>
 
+#include "component_casing_part.hpp"
 #include "rigid_casing.hpp"
 
 namespace rsi {
 
-class RigidCasingPart {
+class RigidCasingPart final : public ComponentCasingPart {
 public:
   /// `casing` is copied. n_boundary: the basis' boundary coordinates; dt [s]
   /// the step of the slip. Throws std::invalid_argument when a contact
   /// node's boundary index is not below n_boundary.
   RigidCasingPart(const RigidCasing& casing, int n_boundary, double dt);
 
-  const RigidCasing& casing() const { return m_casing; }
-  int n_contacts() const { return m_casing.n_contacts(); }
+  const RigidCasing& tips() const override { return m_casing; }
   /// B_B, 3 nc x n_B.
-  const Eigen::MatrixXd& rows() const { return m_b; }
+  const Eigen::MatrixXd& rows() const override { return m_b; }
   /// [g~; s~] at the trial u~_B, from u_B^n, for the step to t_next.
-  void predict(const Eigen::VectorXd& u_trial, const Eigen::VectorXd& u_now, double t_next);
+  void predict(const Eigen::VectorXd& u_trial, const Eigen::VectorXd& u_now, double t_n,
+               double t_next) override;
   /// The last prediction, 3 nc entries (g~, s~_t1, s~_t2 per contact).
-  const Eigen::VectorXd& prediction() const { return m_pred; }
+  const Eigen::VectorXd& prediction() const override { return m_pred; }
   /// g_c at u_B and t into gap().
-  void gaps_at(const Eigen::VectorXd& u_boundary, double t);
+  void gaps_at(const Eigen::VectorXd& u_boundary, double t) override;
   /// The last gaps, nc entries (zeros before the first gaps_at).
-  const Eigen::VectorXd& gap() const { return m_gap; }
+  const Eigen::VectorXd& gap() const override { return m_gap; }
+  /// g(t, phi_c) - growth_c.
+  double rest_gap(int c, double t) const override { return m_casing.imposed_gap(c, t); }
 
 private:
   /// Contact node c's ux, uy, uz from the boundary coordinates.

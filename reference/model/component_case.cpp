@@ -302,6 +302,8 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
       forcing.finish();
       out.casing_forcing = f;
     }
+    casing.claim("modes");
+    if (cj.contains("modes")) out.casing_modes = static_cast<int>(casing.integer("modes", 1, 100000));
     casing.claim("surface");
     if (cj.contains("surface")) {
       out.casing_surface = string_value(casing, cj, "surface");
@@ -427,9 +429,6 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
                                   "tips pass a casing at rest: the physical sliding)");
   if (out.casing && out.liner)
     r.fail(r.full("liner"), "lines the rigid casing only: remove it, or rubbing.casing");
-  if (out.casing && !out.campaign.empty())
-    r.fail(r.full("campaign"), "lists reduced runs, and against the flexible casing (rubbing.casing) "
-                               "only the full-order run is written yet (issue 27): remove it");
   if (static_cast<double>(out.steps_per_revolution) * out.revolutions > 2147483647.0)
     r.fail(r.full("revolutions"), "revolutions x steps_per_revolution must be at most "
                                   "2147483647 (steps of one run), got " +

@@ -131,6 +131,10 @@ struct RubbingSetup {
   /// rigid casing.
   std::optional<GmshCasingSpec> casing;
   std::string casing_surface = "SINNER";
+  /// "casing.modes": the reduced runs keep the casing in its lowest this
+  /// many modes plus a static correction for its load
+  /// (reduced/casing_basis.hpp), [1, 100000], fewer than its dofs.
+  int casing_modes = 30;
   /// "casing.forcing": the paper's load on the flexible casing
   /// (casing_pressure.hpp): p0 cos(n theta) e_r on its contact surface
   /// while t <= duration. Absent: none.

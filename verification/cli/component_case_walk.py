@@ -336,12 +336,13 @@ for key, value in CASING_VALUES.items():
     WALK[full] = (CASING, "export", [with_value(full, value)])
 WALK["component.source.gmsh_casing"] = (CASING, "export", [replace_source({"calculix_deck": os.path.join(WORK, "brick.inp")}, {"node_set": "TIP"})])
 # The flexible casing of a rubbing case: the 3D system's CI case over 0.0005
-# revolution (240 steps), the full run (the reduced ones are refused).
+# revolution (240 steps), the full run (casing.modes: a CB-2 run's).
 SYSTEM = json.load(open(os.path.join(SRC, "data/cases/bladed-disk3d-casing-ci.json")))
 SYSTEM["rubbing"]["revolutions"] = 0.0005
 WALK["rubbing.casing"] = (SYSTEM, "full", [with_value("rubbing.casing.gmsh_casing.inner_radius", 270.55)])
 WALK["rubbing.casing.gmsh_casing"] = (SYSTEM, "full", [with_value("rubbing.casing.gmsh_casing.thickness", 6.0)])
 WALK["rubbing.casing.surface"] = (SYSTEM, "full", [with_value("rubbing.casing.surface", "SOUTER")])
+WALK["rubbing.casing.modes"] = (SYSTEM, "cb", [with_value("rubbing.casing.modes", 12)])
 WALK["rubbing.casing.forcing"] = (SYSTEM, "full", [with_value("rubbing.casing.forcing.pressure", 40.0),
                                                    with_value("rubbing.casing.forcing.nodal_diameters", 3),
                                                    with_value("rubbing.casing.forcing.duration", 1e-6)])

@@ -38,7 +38,20 @@ std::string rubbing_json(const RubbingModel& model) {
   j["mass"] = model.component_case().lumped_mass ? "lumped" : "consistent";
   j["units"] = model.component_case().units;
   j["contact_nodes"] = model.contact_nodes();
-  j["gap"] = s.oval_gap ? "oval" : "constant";
+  j["gap"] = s.casing ? "flexible" : s.oval_gap ? "oval" : "constant";
+  if (s.casing) {
+    // The flexible casing (issue 27): its ring and what the reduced runs keep of it.
+    j["casing_inner_radius"] = s.casing->inner_radius;
+    j["casing_thickness"] = s.casing->thickness;
+    j["casing_width"] = s.casing->width;
+    j["casing_modes"] = s.casing_modes;
+    j["casing_dofs"] = model.problem.structures.at(1).n_dofs();
+    if (s.casing_forcing) {
+      j["casing_pressure"] = s.casing_forcing->pressure;
+      j["casing_nodal_diameters"] = s.casing_forcing->nodal_diameters;
+      j["casing_load_duration"] = s.casing_forcing->duration;
+    }
+  }
   j["gap_value"] = s.gap;
   j["gap_width"] = s.gap_width;
   j["friction_coefficient"] = s.friction_coefficient;
@@ -105,8 +118,10 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
   }
   const RubbingCampaignRun* reference =
       setup.full_revolutions > 0.0 && runs.front().error.empty() ? &runs.front() : nullptr;
-  // A liner adds its columns (a case without one keeps its bytes).
+  // A liner adds its columns, the flexible casing the gaps' norms (a case
+  // with neither keeps its bytes).
   const bool liner = model.problem.casing.liner.has_value();
+  const bool flexible = setup.casing.has_value();
   std::ostringstream csv;
   csv.precision(10);
   csv << "method,modes,coordinates,dt,critical_dt,step_limit,steps_per_sample,steps,completed,basis_s,"
@@ -114,7 +129,8 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
          "einf_lambda,stick_slip_transitions,stick_fraction,slip_fraction,max_cone_violation,"
          "max_stick_slip_residual,energy_balance_error,energy_scale,contact_work,damping_work,"
          "first_mode_hz"
-      << (liner ? ",plastic_work,max_wear_depth,wear_lobes,e2_wear,einf_wear" : "") << '\n';
+      << (liner ? ",plastic_work,max_wear_depth,wear_lobes,e2_wear,einf_wear" : "")
+      << (flexible ? ",e2_gap,einf_gap,casing_basis,external_work" : "") << '\n';
   for (const RubbingCampaignRun& r : runs) {
     const RunSummary& s = r.run.summary;
     const RubbingErrorNorms e =
@@ -136,10 +152,16 @@ int campaign_component_case(const CampaignOptions& options, const ComponentCase&
     if (liner)
       csv << ',' << s.final_plastic_work << ',' << s.max_wear_depth << ',' << s.wear_lobes << ','
           << e.e2_wear << ',' << e.einf_wear;
+    if (flexible)
+      csv << ',' << e.e2_gap << ',' << e.einf_gap << ',' << s.casing_basis << ','
+          << s.final_external_work;
     csv << '\n';
     std::printf("%-8s %4d  e2 response %.4e  einf %.4e  e2 lambda %.4e  einf %.4e\n",
                 r.method.c_str(), r.modes, e.e2_response, e.einf_response, e.e2_lambda,
                 e.einf_lambda);
+    if (flexible)
+      std::printf("%-8s %4d  e2 gaps %.4e  einf %.4e  (casing %s)\n", r.method.c_str(), r.modes,
+                  e.e2_gap, e.einf_gap, s.casing_basis.c_str());
     if (liner)
       std::printf("%-8s %4d  wear: max depth %.4e, %d lobes, W_plastic %.4e, e2 %.4e, einf %.4e\n",
                   r.method.c_str(), r.modes, s.max_wear_depth, s.wear_lobes, s.final_plastic_work,

@@ -40,6 +40,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   RubbingRunOptions run;
   run.method = options.method;
   run.modes = options.modes;
+  run.casing_modes = options.casing_modes;
   run.force = options.force;
   run.checkpoint = throw_if_interrupted;
   run.progress = [&preparing, &terminal](double fraction) {

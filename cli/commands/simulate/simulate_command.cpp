@@ -89,8 +89,9 @@ SimulateCommand::SimulateCommand(CLI::App& app)
                  ->check(CLI::Range(0.0, 1.0));
   m_casing = m_command
                  .add_option("--casing-modes", simulate.casing_modes,
-                             "reduced methods: 0 (the full casing) or N_c, the casing in its lowest "
-                             "N_c modes plus a static correction for the forcing")
+                             "reduced methods: 0 (the full casing; a component case's "
+                             "flexible casing: its rubbing.casing.modes) or N_c, the casing in "
+                             "its lowest N_c modes plus a static correction for the forcing")
                  ->capture_default_str()
                  ->check(integer_in(0, 1000000000, "0 (the full casing) or the casing modes kept"));
   m_selection =
@@ -155,11 +156,13 @@ int SimulateCommand::run(StagedOutput& output) {
 int SimulateCommand::simulate(const ComponentCase& c, StagedOutput& output) const {
   const SimulateOptions& options = m_options;
   // A component run takes its step from its rubbing object (each run at
-  // its own step already) and has no casing to reduce.
-  if (options.time_step != "case" || options.casing_modes != 0 || options.selection != "lowest")
-    throw UsageError("--time-step, --casing-modes, --selection: only for the paper's case; a "
-                     "component case sets its steps in its rubbing object and keeps the lowest "
-                     "modes");
+  // its own step already); only the flexible casing has modes to keep.
+  if (options.time_step != "case" || options.selection != "lowest")
+    throw UsageError("--time-step, --selection: only for the paper's case; a component case "
+                     "sets its steps in its rubbing object and keeps the lowest modes");
+  if (options.casing_modes != 0 && !(c.rubbing && c.rubbing->casing))
+    throw UsageError("--casing-modes: only for the paper's case and a component case with a "
+                     "flexible casing (rubbing.casing); this one's casing is rigid");
   return simulate_component_case(options, c, output);
 }
 
