@@ -121,7 +121,7 @@ CasingBasis reduce_solid_casing(const Component& casing, int modes,
     const Eigen::SparseMatrix<double> lower = casing.stiffness.triangularView<Eigen::Lower>();
     if (k.factorize(lower) != CholmodFactor::Status::successful)
       throw ModalError("casing reduction: the clamped casing's stiffness cannot be factorized (" +
-                       k.message() + "); clamp it (rubbing.casing.gmsh_casing.clamped_flanges)");
+                       k.message() + "): a free casing has rigid-body motions; clamp it");
     Eigen::VectorXd x(n);
     if (!k.solve(CholmodFactor::System::a, forcing, x))
       throw ModalError("casing reduction: CHOLMOD's solve with the casing's stiffness failed");
