@@ -212,7 +212,7 @@ if flexible:
     axes[1].set_xlabel("t [ms]")
     axes[0].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(f"{out}/gaps.png", dpi=120)
+    fig.savefig(f"{out}/gap_histories.png", dpi=120)
     plt.close(fig)
     fig, ax = plt.subplots(figsize=(6, 4))
     for m in methods:
@@ -297,7 +297,7 @@ if flexible:
     for r in rows:
         lines.append(f"| {r['name']} | {r['casing_basis']} | {r['e2_gap']:.3e} "
                      f"| {r['einf_gap']:.3e} | {r['external_work']:.4e} |")
-    lines += ["", "![gaps](gaps.png)", "", "![gaps against cost](gap_error_vs_cost.png)"]
+    lines += ["", "![gaps](gap_histories.png)", "", "![gaps against cost](gap_error_vs_cost.png)"]
 lines += ["", "![accuracy against cost](error_vs_cost.png)", "",
           "## Response", "", "![response](response.png)", "",
           "![last 5 revolutions](response_last.png)", "",

@@ -25,7 +25,8 @@
 #     refused for a rigid casing (exit 2); rubbing.casing.modes at the
 #     casing's dofs or more is refused naming the key (exit 2).
 # SANITIZED = 1 (an ASan/UBSan build): `rsi simulate --method cb` alone
-# over 0.002 revolution and the refusals, the checks of 1 (no full run).
+# over 0.002 revolution with the casing at 270.6 mm (pressed: in contact
+# from the first step) and the refusals, the checks of 1 (no full run).
 # Skipped (exit 77) without gmsh or ccx.
 # Usage: system3d_reduced_run.sh RSI SOURCE_DIR CCX_CACHE [SANITIZED]
 set -u
@@ -47,7 +48,8 @@ near=$work/near.json
   >/dev/null
 if [ "$sanitized" = 1 ]; then
   /usr/bin/python3 "$src/verification/cli/case_variant.py" "$near" "$near" \
-    rubbing.revolutions=0.002 rubbing.campaign.full_revolutions=0.002 >/dev/null
+    rubbing.revolutions=0.002 rubbing.campaign.full_revolutions=0.002 \
+    rubbing.casing.gmsh_casing.inner_radius=270.6 >/dev/null
   mkdir -p "$work/c/runs"
   "$rsi" simulate "$near" --method cb --modes 20 --ccx-cache "$cache" --out "$work/c/runs/cb-20" \
     >"$work/run.log" 2>&1 || fail "cb: rsi simulate exited $?: $(tail -3 "$work/run.log")"
