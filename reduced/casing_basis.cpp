@@ -30,6 +30,15 @@ double mass_norm(const Eigen::SparseMatrix<double>& mass, const Eigen::VectorXd&
   return std::sqrt(std::max(0.0, x.dot(mass * x)));
 }
 
+/// The basis of `modes` modes, before any correction.
+CasingBasis modal_basis(const Modes& m, int modes) {
+  CasingBasis basis;
+  basis.n_modes = modes;
+  basis.shapes = m.shapes;
+  basis.omega_squared = m.omega_squared;
+  return basis;
+}
+
 /// The static correction x = K^-1 F added to `basis` (header: kept only
 /// when its M-orthogonal part is a direction), by a Rayleigh-Ritz step.
 void add_static_correction(CasingBasis& basis, const Eigen::SparseMatrix<double>& stiffness,
@@ -80,11 +89,8 @@ CasingBasis reduce_casing(const Casing& casing, int modes, const Eigen::VectorXd
                                 std::to_string(forcing.size()) + " entries, the casing " +
                                 std::to_string(n) + " dofs");
   const auto start = std::chrono::steady_clock::now();
-  const Modes m = lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::dense);
-  CasingBasis basis;
-  basis.n_modes = modes;
-  basis.shapes = m.shapes;
-  basis.omega_squared = m.omega_squared;
+  CasingBasis basis =
+      modal_basis(lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::dense), modes);
   if (modes < n && forcing.any()) {
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(casing.stiffness);
     if (k.info() != Eigen::Success)
@@ -111,11 +117,8 @@ CasingBasis reduce_solid_casing(const Component& casing, int modes,
                                 std::to_string(forcing.size()) + " entries, the casing " +
                                 std::to_string(n) + " dofs");
   const auto start = std::chrono::steady_clock::now();
-  const Modes m = lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::automatic);
-  CasingBasis basis;
-  basis.n_modes = modes;
-  basis.shapes = m.shapes;
-  basis.omega_squared = m.omega_squared;
+  CasingBasis basis = modal_basis(
+      lowest_modes(casing.stiffness, casing.mass, modes, ModalSolver::automatic), modes);
   if (forcing.size() == n && forcing.any()) {
     CholmodFactor k;
     const Eigen::SparseMatrix<double> lower = casing.stiffness.triangularView<Eigen::Lower>();
