@@ -47,10 +47,10 @@ if [ "$sanitized" = 1 ]; then
   forced_revolutions=0.001
 fi
 /usr/bin/python3 "$src/verification/cli/case_variant.py" "$case" "$pressed" \
-  rubbing.revolutions=$pressed_revolutions \
+  rubbing.revolutions=$pressed_revolutions rubbing.campaign.full_revolutions=0 \
   'rubbing.casing={"gmsh_casing": {"inner_radius": 270.6, "thickness": 5.0, "width": 60.0, "element_size": 15.0, "clamped_flanges": 1}}' >/dev/null
 /usr/bin/python3 "$src/verification/cli/case_variant.py" "$case" "$forced" \
-  rubbing.revolutions=$forced_revolutions >/dev/null
+  rubbing.revolutions=$forced_revolutions rubbing.campaign.full_revolutions=0 >/dev/null
 /usr/bin/python3 "$src/verification/cli/case_variant.py" "$case" "$bad" 'rubbing.gap={"constant": 0.1}' >/dev/null
 
 for run in pressed forced; do
