@@ -58,6 +58,7 @@ SolidCasingPart::SolidCasingPart(const RigidCasing& tips, int n_boundary, double
   }
   m_p = m_p_prev = m_p_trial = m_p_next = Eigen::VectorXd::Zero(m_m);
   m_rho.assign(static_cast<size_t>(m_nc), 0.0);
+  m_face.assign(static_cast<size_t>(m_nc), -1);
   m_h = Eigen::MatrixXd::Zero(3 * m_nc, m_m);
   m_pred.setZero(3 * m_nc);
   m_gap.setZero(m_nc);
@@ -87,13 +88,15 @@ void SolidCasingPart::locate(double t) {
   m_h.setZero();
   for (int c = 0; c < m_nc; ++c) {
     const double theta = tips.polar_angle(c) + m_omega * t;
-    const std::optional<SurfacePoint> point = m_surface.locate(theta, tips.axial_coordinate(c));
+    const std::optional<SurfacePoint> point =
+        m_surface.locate(theta, tips.axial_coordinate(c), m_face[static_cast<size_t>(c)]);
     if (!point)
       throw ComponentIntegrationError(kWhere + "t = " + message_number(t) + " s: tip " +
                                       std::to_string(c + 1) + " (height " +
                                       message_number(tips.axial_coordinate(c)) +
                                       ") is above no face of the casing's contact surface");
     m_rho[static_cast<size_t>(c)] = point->rho;
+    m_face[static_cast<size_t>(c)] = point->face;
     const std::array<double, 6> n = triangle6_shape_functions(point->xi, point->eta);
     const Eigen::Matrix3d d = casing_directions(c, t);
     const std::array<int, 6>& nodes = m_surface.face_nodes(point->face);

@@ -145,6 +145,7 @@ private:
   bool m_held = false; ///< the last prediction held the casing (t = 0)
   double m_located_t = -1.0;
   std::vector<double> m_rho; ///< rho_c at m_located_t
+  std::vector<int> m_face;   ///< each tip's face at m_located_t: the next search's hint
   Eigen::MatrixXd m_h;       ///< H at m_located_t
   Eigen::VectorXd m_pred, m_gap;
   Eigen::VectorXd m_lambda; ///< the step's solved multipliers

@@ -186,6 +186,15 @@ std::optional<SurfacePoint> CasingSurface::on_face(int f, double theta, double z
   return SurfacePoint{f, s(0), s(1), s(2)};
 }
 
+std::optional<SurfacePoint> CasingSurface::locate(double theta, double z, int hint) const {
+  if (hint >= 0 && hint < n_faces()) {
+    const double tol = 1e-9 * (z_max_ - z_min_);
+    if (z >= z_min_ - tol && z <= z_max_ + tol)
+      if (std::optional<SurfacePoint> p = on_face(hint, wrapped(theta), z)) return p;
+  }
+  return locate(theta, z);
+}
+
 std::optional<SurfacePoint> CasingSurface::locate(double theta, double z) const {
   const double tol = 1e-9 * (z_max_ - z_min_);
   if (!(z >= z_min_ - tol && z <= z_max_ + tol)) return std::nullopt;

@@ -72,6 +72,10 @@ public:
   /// the ray misses every face (past the surface's axial ends). On a shared
   /// edge either neighbour answers.
   std::optional<SurfacePoint> locate(double theta, double z) const;
+  /// The same, trying face `hint` first (a tip's face of the step before:
+  /// it moves by a fraction of a face a step; -1: no hint). Off the hint,
+  /// or on a shared edge, another face may answer than locate(theta, z)'s.
+  std::optional<SurfacePoint> locate(double theta, double z, int hint) const;
 
 private:
   std::vector<std::array<int, 6>> faces_;

@@ -182,6 +182,26 @@ TEST(CasingSurface, LocateOnFlatAndCurvedFaces) {
   }
 }
 
+// The hinted search (the reduced solver's: a tip's face of the step before
+// tried first) finds what the grid finds, falls back to it when the hint
+// misses, and ignores a hint that is no face.
+TEST(CasingSurface, HintedSearchFindsTheSamePoint) {
+  const CalculixDeck deck =
+      read_deck(tetrahedron_deck(true, "*SURFACE, NAME=Inner, TYPE=ELEMENT\n7, S1\n"));
+  const CasingSurface surface(deck, "INNER");
+  for (const int hint : {0, -1, 1, 7}) {
+    const std::optional<SurfacePoint> a = surface.locate(0.02, 2.0);
+    const std::optional<SurfacePoint> b = surface.locate(0.02, 2.0, hint);
+    ASSERT_TRUE(a && b) << "hint " << hint;
+    EXPECT_EQ(b->face, a->face);
+    EXPECT_EQ(b->rho, a->rho) << "hint " << hint;
+    EXPECT_EQ(b->xi, a->xi);
+    EXPECT_EQ(b->eta, a->eta);
+    EXPECT_FALSE(surface.locate(0.5, 2.0, hint)) << "beside the face, hint " << hint;
+    EXPECT_FALSE(surface.locate(0.0, 10.5, hint)) << "past the axial end, hint " << hint;
+  }
+}
+
 TEST(CasingSurface, RefusalsNameTheSurface) {
   const auto refused = [](const std::string& surface_lines, const std::string& name,
                           const std::string& words) {
