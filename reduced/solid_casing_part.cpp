@@ -62,7 +62,6 @@ SolidCasingPart::SolidCasingPart(const RigidCasing& tips, int n_boundary, double
   m_h = Eigen::MatrixXd::Zero(3 * m_nc, m_m);
   m_pred.setZero(3 * m_nc);
   m_gap.setZero(m_nc);
-  m_lambda.setZero(3 * m_nc);
   locate(0.0);
 }
 
@@ -120,7 +119,6 @@ void SolidCasingPart::start() {
   m_p_prev.setZero();
   if (m_force_modal.size() > 0) m_p_prev = 0.5 * m_dt * m_dt * load_share(0) * m_force_modal;
   m_p_trial = m_p;
-  m_lambda.setZero();
   m_external_work = m_contact_work = 0.0;
 }
 
@@ -145,7 +143,6 @@ void SolidCasingPart::predict(const Eigen::VectorXd& u_trial, const Eigen::Vecto
     m_pred(3 * c + 1) += h.row(1).dot(dp);
     m_pred(3 * c + 2) += h.row(2).dot(dp);
   }
-  m_lambda.setZero();
 }
 
 void SolidCasingPart::add_flexibility(Eigen::MatrixXd& w) const {
@@ -157,7 +154,6 @@ void SolidCasingPart::add_flexibility(Eigen::MatrixXd& w) const {
 
 void SolidCasingPart::correct(const Eigen::VectorXd& lambda) {
   if (m_held) return;
-  m_lambda = lambda;
   m_p_next = m_p_trial;
   if (lambda.any()) m_p_next.noalias() += (m_dt * m_dt) * (m_h.transpose() * lambda);
   const Eigen::VectorXd increment = m_p_next - m_p_prev;

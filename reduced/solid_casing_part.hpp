@@ -148,7 +148,6 @@ private:
   std::vector<int> m_face;   ///< each tip's face at m_located_t: the next search's hint
   Eigen::MatrixXd m_h;       ///< H at m_located_t
   Eigen::VectorXd m_pred, m_gap;
-  Eigen::VectorXd m_lambda; ///< the step's solved multipliers
   double m_external_work = 0.0, m_contact_work = 0.0;
 };
 
