@@ -34,6 +34,14 @@ std::unique_ptr<ComponentContactSolve> contact_solve_of(const RigidCasing& casin
       options.liner->solve);
 }
 
+/// options.dt, checked: finite and > 0 (std::invalid_argument otherwise).
+double checked_dt(const ComponentIntegratorOptions& options) {
+  if (!(options.dt > 0.0) || !std::isfinite(options.dt))
+    throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
+                                ", allowed a finite value > 0");
+  return options.dt;
+}
+
 /// Whether a predicted gap is negative: the only steps whose solve reads W.
 bool closing(const Eigen::VectorXd& predicted) {
   for (Eigen::Index k = 0; k < predicted.size(); k += 3)
@@ -47,11 +55,8 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                          const ComponentIntegratorOptions& options)
     : m_contact(contact_solve_of(casing, options))
     , m_liner(dynamic_cast<LinerContactSolve*>(m_contact.get())) {
-  if (!(options.dt > 0.0) || !std::isfinite(options.dt))
-    throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
-                                ", allowed a finite value > 0");
   m_casing = std::make_unique<RigidCasingPart>(
-      casing, static_cast<int>(basis.boundary_position.size()), options.dt);
+      casing, static_cast<int>(basis.boundary_position.size()), checked_dt(options));
   init(basis, options);
 }
 
@@ -61,9 +66,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis,
   if (!casing) throw std::invalid_argument(kWhere + "no casing part");
   if (options.liner)
     throw std::invalid_argument(kWhere + "a liner is the rigid casing's; allowed none here");
-  if (!(options.dt > 0.0) || !std::isfinite(options.dt))
-    throw std::invalid_argument(kWhere + "dt = " + message_number(options.dt) +
-                                ", allowed a finite value > 0");
+  checked_dt(options);
   auto coulomb = std::make_unique<CoulombNodeSolve>(casing->n_contacts(), options.dt, options.mu,
                                                     options.coulomb, options.closing_subset);
   m_coulomb = coulomb.get();
