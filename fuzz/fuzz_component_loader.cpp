@@ -96,7 +96,8 @@ void load(const fs::path& folder, const std::string& bytes) {
       c.source == rsi::ComponentSource::gmsh_bladed_disk ||
       c.source == rsi::ComponentSource::gmsh_casing)
     return;
-  if (c.source == rsi::ComponentSource::calculix_deck) {
+  if (c.source == rsi::ComponentSource::calculix_deck ||
+      c.source == rsi::ComponentSource::calculix_sector) {
     // *INCLUDE names files the harness cannot confine (relative to the
     // deck's folder, at any depth): only decks without one are read.
     std::string upper = bytes;

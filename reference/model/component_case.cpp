@@ -21,6 +21,7 @@
 #include "case_json.hpp"
 #include "mass_lumping.hpp"
 #include "matrix_market.hpp"
+#include "sector_assembly.hpp"
 
 namespace rsi {
 namespace {
@@ -557,6 +558,8 @@ std::string source_key(const ComponentCase& c, const ComponentLoadOptions& optio
     return material ? "keys 'component.source.gmsh_casing.young_modulus' and "
                       "'component.source.gmsh_casing.density'"
                     : "key 'component.source.gmsh_casing'";
+  case ComponentSource::calculix_sector:
+    return "key 'component.source.calculix_sector.deck'";
   case ComponentSource::calculix_deck:
     break;
   }
@@ -632,12 +635,15 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   const bool blade = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_blade");
   const bool disk = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_bladed_disk");
   const bool casing = sj.is_object() && sj.size() == 1 && sj.contains("gmsh_casing");
-  if (!deck && !folder && !blade && !disk && !casing)
+  const bool sector = sj.is_object() && sj.size() == 1 && sj.contains("calculix_sector");
+  if (!deck && !folder && !blade && !disk && !casing && !sector)
     comp.fail(comp.full("source"), "must be {\"calculix_deck\": file[, \"calculix_matrices\": "
                                    "\"dir/JOB\"]}, {\"matrix_market\": folder}, "
                                    "{\"gmsh_blade\": {parameters}}, "
-                                   "{\"gmsh_bladed_disk\": {parameters}} or "
-                                   "{\"gmsh_casing\": {parameters}}, got " +
+                                   "{\"gmsh_bladed_disk\": {parameters}}, "
+                                   "{\"gmsh_casing\": {parameters}} or "
+                                   "{\"calculix_sector\": {\"deck\", \"sectors\", \"left\", "
+                                   "\"right\"}}, got " +
                                        sj.dump().substr(0, 80));
   if (deck) {
     c.source = ComponentSource::calculix_deck;
@@ -650,6 +656,24 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   } else if (blade) {
     c.source = ComponentSource::gmsh_blade;
     c.gmsh_blade = read_gmsh_blade(source.object("gmsh_blade"), sj.at("gmsh_blade"));
+  } else if (sector) {
+    const json& xj = sj.at("calculix_sector");
+    if (!xj.is_object())
+      source.fail(source.full("calculix_sector"),
+                  "must be {\"deck\": file, \"sectors\": N, \"left\": \"NSET\", \"right\": "
+                  "\"NSET\"}");
+    ObjectReader x = source.object("calculix_sector");
+    c.source = ComponentSource::calculix_sector;
+    c.source_path = resolve(string_value(x, xj, "deck"), path);
+    c.sectors = static_cast<int>(x.integer("sectors", 3, 200));
+    const auto upper = [](std::string name) {
+      std::transform(name.begin(), name.end(), name.begin(),
+                     [](unsigned char ch) { return std::toupper(ch); });
+      return name;
+    };
+    c.sector_left = upper(string_value(x, xj, "left"));
+    c.sector_right = upper(string_value(x, xj, "right"));
+    x.finish();
   } else if (casing) {
     if (!sj.at("gmsh_casing").is_object())
       source.fail(source.full("gmsh_casing"), "must be an object of the casing's parameters");
@@ -690,7 +714,8 @@ ComponentCase parse_component_case(const json& document, const std::string& path
   } else if (c.source == ComponentSource::gmsh_casing) {
     c.boundary_node_set = "INNER";
   } else {
-    comp.fail(comp.full("boundary"), "missing (required for a calculix_deck source)");
+    comp.fail(comp.full("boundary"),
+              "missing (required for a calculix_deck or calculix_sector source)");
   }
 
   comp.claim("mass");
@@ -712,6 +737,10 @@ ComponentCase parse_component_case(const json& document, const std::string& path
       comp.fail(comp.full("rotation_effects"),
                 "needs a calculix_deck or gmsh_blade source (ccx runs the deck under the "
                 "centrifugal load), the source is a Matrix Market folder");
+    if (c.rotation_effects && c.source == ComponentSource::calculix_sector)
+      comp.fail(comp.full("rotation_effects"),
+                "not written yet for an assembled sector deck (calculix_sector): ccx would have "
+                "to run the whole disk under the centrifugal load");
     if (c.rotation_effects && c.source == ComponentSource::gmsh_casing)
       comp.fail(comp.full("rotation_effects"),
                 "the casing is the stator: it does not turn, and has no rotation effects");
@@ -838,7 +867,7 @@ ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions&
   std::string source = options.source_override.empty() ? c.source_path : options.source_override;
   if (gmsh && options.source_override.empty()) source = gmsh_deck(c, options.ccx_cache);
   if (!std::filesystem::is_regular_file(source))
-    throw ImportError(c.case_path + ": key 'component.source.calculix_deck': '" + source +
+    throw ImportError(c.case_path + ": " + source_key(c, ComponentLoadOptions{}, false) + ": '" + source +
                       "' is not a file (the deck; " + options.source_named() + " overrides it)");
   const CalculixDeck deck = read_calculix_deck(source);
   check_calculix_features(deck);
@@ -865,6 +894,38 @@ ComponentDeck component_deck(const ComponentCase& c, const ComponentLoadOptions&
       throw ImportError(c.case_path + ": key 'component.boundary': boundary node " +
                         std::to_string(id) + " is not a node of the deck " + source);
   return {source, deck, boundary};
+}
+
+/// The bladed disk of a calculix_sector source: the sector's component
+/// turned and summed (sector_assembly.hpp). Faces pair within 1e-6 of the
+/// sector's size (its largest node distance from the origin): a deck's
+/// coordinates are often written to 6 or 7 digits, and two face nodes lie
+/// an element apart.
+Component assembled_sectors(const Component& sector, const ComponentCase& c,
+                            const ComponentDeck& model) {
+  const auto set = [&](const std::string& name, const char* key) {
+    const auto found = model.deck.nsets.find(name);
+    if (found == model.deck.nsets.end())
+      throw ImportError(c.case_path + ": key 'component.source.calculix_sector." + key +
+                        "': the deck " + model.source + " has no *NSET named " + name);
+    return found->second;
+  };
+  SectorPattern p;
+  p.sectors = c.sectors;
+  p.axis = c.rotation_axis;
+  p.left = set(c.sector_left, "left");
+  p.right = set(c.sector_right, "right");
+  p.boundary = model.boundary;
+  p.stride = static_cast<int>(model.deck.largest_node_id) + 1;
+  double size = 0.0;
+  for (const ComponentNode& n : sector.nodes)
+    if (!n.generated) size = std::max(size, n.x.norm());
+  p.tolerance = 1e-6 * size;
+  const std::string what =
+      c.case_path + ": key 'component.source.calculix_sector' (" + model.source + ")";
+  Component disk = assemble_sectors(sector, p, what);
+  check_component(disk, what);
+  return disk;
 }
 
 Component load_component(const ComponentCase& c, const ComponentLoadOptions& options) {
@@ -907,6 +968,8 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
                         options.ccx_cache_named() + " " + options.ccx_cache +
                         ") are not a component: " + e.what());
     }
+    if (c.source == ComponentSource::calculix_sector)
+      component = assembled_sectors(component, c, model);
   }
   check_frequency_scale(component, c, options);
   component.units = c.units;

@@ -56,7 +56,8 @@ enum class ComponentSource {
   matrix_market,
   gmsh_blade,
   gmsh_bladed_disk,
-  gmsh_casing
+  gmsh_casing,
+  calculix_sector ///< one sector's deck, assembled into N (sector_assembly.hpp)
 };
 
 struct ModalCampaign {
@@ -182,6 +183,11 @@ struct ComponentCase {
   GmshBladeSpec gmsh_blade;                ///< gmsh_blade: the blade's parameters
   GmshBladedDiskSpec gmsh_bladed_disk;     ///< gmsh_bladed_disk: the disk's and its blade's
   GmshCasingSpec gmsh_casing;              ///< gmsh_casing: the ring's parameters
+  /// calculix_sector: source_path is the sector's deck; its N copies about
+  /// rotation_axis; the node sets of its faces at -alpha/2 and +alpha/2.
+  int sectors = 0;
+  std::string sector_left;
+  std::string sector_right;
   std::string units;
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();
   std::optional<ModalCampaign> modal_campaign;

@@ -325,6 +325,58 @@ for key, value in DISK_VALUES.items():
     full = "component.source.gmsh_bladed_disk." + key
     WALK[full] = (DISK, "export", [with_value(full, value)])
 WALK["component.source.gmsh_bladed_disk"] = (DISK, "export", [replace_source({"calculix_deck": os.path.join(WORK, "brick.inp")}, {"node_set": "TIP"})])
+# One's own sector deck (calculix_sector): one C3D8 brick, a quarter of a
+# ring (inner radius 10 mm clamped, outer 20 mm; faces LEFT at 0 and RIGHT
+# at 90 degrees), four of them a ring; FACE0 and FACE90 are the same faces
+# by other names for the left and right variants (the pairing then fails:
+# the message changes).
+SECTOR_DECK = """** a quarter ring of one C3D8 brick (N, mm, t, s)
+*NODE, NSET=NALL
+1, 10., 0., 0.
+2, 20., 0., 0.
+3, 0., 20., 0.
+4, 0., 10., 0.
+5, 10., 0., 5.
+6, 20., 0., 5.
+7, 0., 20., 5.
+8, 0., 10., 5.
+*ELEMENT, TYPE=C3D8, ELSET=EALL
+1, 1, 2, 3, 4, 5, 6, 7, 8
+*NSET, NSET=HUB
+1, 4, 5, 8
+*NSET, NSET=LEFT
+1, 2, 5, 6
+*NSET, NSET=RIGHT
+4, 3, 8, 7
+*NSET, NSET=FACE0
+2, 6
+*NSET, NSET=FACE90
+3, 7
+*NSET, NSET=TIP
+3, 7
+*MATERIAL, NAME=STEEL
+*ELASTIC
+{E}, 0.3
+*DENSITY
+7.85e-9
+*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
+*BOUNDARY
+HUB, 1, 3
+"""
+for name, modulus in (("sector.inp", "210000."), ("sector-soft.inp", "70000.")):
+    with open(os.path.join(WORK, name), "w") as f:
+        f.write(SECTOR_DECK.replace("{E}", modulus))
+SECTOR = copy.deepcopy(BASE)
+SECTOR["component"]["source"] = {"calculix_sector": {"deck": "sector.inp", "sectors": 4,
+                                                     "left": "LEFT", "right": "RIGHT"}}
+SECTOR["component"]["boundary"] = {"node_set": "TIP"}
+for _k in ("modal_campaign", "rubbing", "damping"):
+    SECTOR.pop(_k)
+SECTOR_VALUES = {"deck": "sector-soft.inp", "sectors": 5, "left": "FACE90", "right": "FACE0"}
+for key, value in SECTOR_VALUES.items():
+    full = "component.source.calculix_sector." + key
+    WALK[full] = (SECTOR, "export", [with_value(full, value)])
+WALK["component.source.calculix_sector"] = (SECTOR, "export", [replace_source({"calculix_deck": os.path.join(WORK, "brick.inp")}, {"node_set": "TIP"})])
 # The casing: the CI ring made coarser (element size 30 mm).
 CASING = json.load(open(os.path.join(SRC, "data/cases/casing3d-ci.json")))
 CASING["component"]["source"]["gmsh_casing"]["element_size"] = 30.0
@@ -367,6 +419,11 @@ def documented_keys():
     return keys
 
 
+BASE_NAMES = {id(BASE): "brick", id(BLADE): "blade", id(SWEEP_BASE): "sweep",
+              id(SWEEP_ROTATING): "sweep-rotating", id(ROTATING_BASE): "rotating",
+              id(DISK): "disk", id(SECTOR): "sector", id(CASING): "casing", id(SYSTEM): "system"}
+
+
 def main():
     failures = 0
     # The inputs the variants name: the soft brick's matrices and folder.
@@ -394,7 +451,9 @@ def main():
     order = [k for k in documented if k in WALK] + [k for k in WALK if k not in documented]
     for key in order:
         base, commands, variants = WALK[key]
-        tag = ("blade" if base is BLADE else "sweep" if base is SWEEP_BASE else "brick", commands)
+        # Each base by itself: a variant of the disk compared with the
+        # brick's output would change it whatever the key did.
+        tag = (BASE_NAMES[id(base)], commands)
         if tag not in bases:
             first = run(copy.deepcopy(base), commands)
             again = run(copy.deepcopy(base), commands)
