@@ -1,6 +1,7 @@
 #include "component_input.hpp"
 
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -10,12 +11,40 @@
 #include "bladed_disk.hpp"
 #include "case_json.hpp"
 #include "casing.hpp"
+#include "cyclic_images.hpp"
 #include "usage_error.hpp"
 #include "nodal_diameter.hpp"
 #include "paper_components.hpp"
 #include "rotating_component.hpp"
 
 namespace rsi {
+
+namespace {
+
+/// The nodal diameter of a mode of a component case's model: a bladed
+/// disk's (its sectors' images, cyclic_images.hpp), the flexible casing's
+/// lobes (its radial displacement's harmonic up to 64); none for a blade.
+std::function<std::optional<int>(const Eigen::VectorXd&)>
+component_diameter(const ComponentCase& c, const Component& component) {
+  const int sectors = c.source == ComponentSource::gmsh_bladed_disk ? c.gmsh_bladed_disk.sectors
+                      : c.source == ComponentSource::calculix_sector ? c.sectors
+                                                                      : 0;
+  if (sectors > 0) {
+    auto images = std::make_shared<const CyclicImages>(cyclic_images(component, sectors));
+    return [images](const Eigen::VectorXd& x) -> std::optional<int> {
+      return cyclic_nodal_diameter(*images, x);
+    };
+  }
+  if (c.source == ComponentSource::gmsh_casing) {
+    auto ring = std::make_shared<const Component>(component);
+    return [ring](const Eigen::VectorXd& x) -> std::optional<int> {
+      return circumferential_harmonic(*ring, x, 64);
+    };
+  }
+  return {};
+}
+
+} // namespace
 
 ComponentInput load_component_input(const std::string& case_path, const std::string& part,
                                     const ComponentLoadOptions& load, double speed,
@@ -30,6 +59,7 @@ ComponentInput load_component_input(const std::string& case_path, const std::str
                        input.component_case->name + "', got '" + part + "'");
     if (speed == 0.0) {
       input.component = load_component(*input.component_case, load);
+      input.diameter = component_diameter(*input.component_case, input.component);
       return input;
     }
     RotatingComponent rotating = rotating_component(*input.component_case, load, speed);

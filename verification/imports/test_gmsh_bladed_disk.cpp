@@ -15,10 +15,18 @@
 //    counted so. Tolerance on omega^2: 1e-6 relative (the issue's), above
 //    the .dat table's rounding (7 significant digits, E14.7: at most 5e-7
 //    relative) plus both eigensolvers' (1e-10 and ccx's ARPACK, 4e-12
-//    measured in docs/ccx-cyclic-symmetry.md). Without gmsh or ccx:
-//    skipped, saying so.
+//    measured in docs/ccx-cyclic-symmetry.md). Each of those modes' nodal
+//    diameter as rsi reads it (cyclic_images.hpp: its sectors' images, the
+//    Fourier transform over the sectors) is the diameter of the cyclic
+//    eigenvalue it matches (issue 27 item 6's nodal-diameter map).
+// 3. The images' arithmetic: a field turned from sector to sector with a
+//    cos(d k alpha) scale has diameter d, its blocks the scaled sector 0.
+// Without gmsh or ccx: skipped, saying so.
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -28,11 +36,13 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "case_file.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
+#include "cyclic_images.hpp"
 #include "gmsh_blade_fit.hpp"
 #include "gmsh_bladed_disk.hpp"
 #include "modal_analysis.hpp"
@@ -195,8 +205,77 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
   std::printf("%d lowest eigenvalues of the assembly = the sector's cyclic ones (diameters 0-%d, "
               "multiplicity 1, 2, 2, 1) within %.2e relative (first %.6f Hz)\n",
               compared, diameters - 1, worst, modes.frequency_hz(0));
+
+  // Each assembly mode's nodal diameter (rsi's, from its sectors' images:
+  // cyclic_images.hpp) is the diameter of ccx's cyclic eigenvalue it
+  // matches: the one within 1e-6, and no other diameter's within 1e-6.
+  const CyclicImages images = cyclic_images(disk, spec.sectors);
+  std::printf("cyclic images: %zu places of %d sectors\n", images.places.size(), spec.sectors);
+  int classified = 0;
+  for (int i = 0; i < compared; ++i) {
+    std::vector<int> near;
+    for (int k = 0; k < diameters; ++k)
+      for (double lambda : cyclic[k])
+        if (std::abs(modes.omega_squared(i) / lambda - 1.0) <= 1e-6) near.push_back(k);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    ASSERT_EQ(near.size(), 1u) << "mode " << i + 1 << ": ccx's diameters within 1e-6";
+    EXPECT_EQ(cyclic_nodal_diameter(images, modes.shapes.col(i)), near[0])
+        << "mode " << i + 1 << " (" << modes.frequency_hz(i) << " Hz)";
+    ++classified;
+  }
+  std::printf("%d modes: rsi's nodal diameter = ccx's cyclic diameter\n", classified);
   EXPECT_GE(compared, 2 * spec.sectors) << "too few modes below the lists' common top";
   std::filesystem::remove_all(dir);
+}
+
+// The images' arithmetic on the CI disk (gmsh only for its mesh, ccx for
+// its dofs): a field whose sector k is its sector 0 turned by k alpha and
+// scaled by cos(d k alpha + 0.3) has nodal diameter d, d = 0 .. N/2, and
+// the blocks of sector_blocks are that scale times sector 0's (to round-off).
+TEST(GmshBladedDisk, CyclicImagesOfATurnedField) {
+  const std::string missing = testing::missing_programs({"gmsh", "ccx"});
+  if (!missing.empty()) {
+    std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());
+    GTEST_SKIP() << missing << " not on PATH";
+  }
+  const std::string case_path = std::string(RSI_SOURCE_DIR) + "/data/cases/bladed-disk3d-ci.json";
+  const ComponentCase c = parse_component_case(read_case_document(case_path), case_path);
+  ComponentLoadOptions options;
+  const char* cache = std::getenv("RSI_CCX_CACHE");
+  options.ccx_cache = cache && *cache ? cache : RSI_BINARY_DIR "/ccx-cache";
+  const Component disk = load_component(c, options);
+  const int n = c.gmsh_bladed_disk.sectors;
+  const CyclicImages images = cyclic_images(disk, n);
+  // Half the sector's nodes or more are inside it (not on its faces).
+  EXPECT_GE(3 * images.places.size() * n, static_cast<size_t>(disk.n_dofs()) / 2);
+  std::mt19937 generator(27);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int d = 0; d <= n / 2; ++d) {
+    Eigen::VectorXd field = Eigen::VectorXd::Zero(disk.n_dofs());
+    std::vector<Eigen::Vector3d> v(images.places.size());
+    for (auto& x : v)
+      x = {uniform(generator), uniform(generator), uniform(generator)};
+    for (int k = 0; k < n; ++k) {
+      const double a = 2.0 * M_PI * k / n;
+      const Eigen::Matrix3d r = Eigen::AngleAxisd(a, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+      for (size_t p = 0; p < v.size(); ++p) {
+        const Eigen::Vector3d u = std::cos(d * a + 0.3) * (r * v[p]);
+        for (int j = 0; j < 3; ++j)
+          field(images.places[p][static_cast<size_t>(k)][static_cast<size_t>(j)]) = u(j);
+      }
+    }
+    EXPECT_EQ(cyclic_nodal_diameter(images, field), d) << "diameter " << d;
+    const Eigen::VectorXd blocks = sector_blocks(images, field);
+    const Eigen::Index b = 3 * static_cast<Eigen::Index>(v.size());
+    double error = 0.0;
+    for (int k = 0; k < n; ++k)
+      error = std::max(error, (blocks.segment(k * b, b) * std::cos(0.3) -
+                               blocks.segment(0, b) * std::cos(d * 2.0 * M_PI * k / n + 0.3))
+                                  .cwiseAbs()
+                                  .maxCoeff());
+    EXPECT_LE(error, 16 * std::numeric_limits<double>::epsilon()) << "diameter " << d;
+  }
 }
 
 } // namespace

@@ -12,9 +12,11 @@
 //    omega^2: 1e-6 relative (the issue's), above the .dat table's rounding
 //    (7 significant digits: at most 5e-7 relative) plus both eigensolvers'
 //    (rsi's checked residuals 1e-10; ccx's ARPACK converged to machine
-//    precision). Without gmsh or ccx: skipped, saying so.
+//    precision). Its lobes as rsi reads them (cyclic_images.hpp) on radial
+//    fields of known harmonic. Without gmsh or ccx: skipped, saying so.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +38,7 @@
 #include "casing_pressure.hpp"
 #include "casing_surface.hpp"
 #include "component_case.hpp"
+#include "cyclic_images.hpp"
 #include "gmsh_blade_fit.hpp"
 #include "gmsh_casing.hpp"
 #include "casing_basis.hpp"
@@ -196,6 +199,35 @@ namespace {
 // field of the ring, given at the nodes, interpolated at those points to
 // its exact value there (the face's shape functions reproduce quadratics:
 // to the deck's digits, 4e-13 mm, derived below).
+// The casing's lobes (cyclic_images.hpp, circumferential_harmonic): on the
+// CI ring's nodes, u = e_r cos(h theta + 0.3) + 0.2 e_z sin(h theta) has h
+// lobes, h = 0 .. 24 (the axial part has no radial displacement); a field
+// of lobes h = 5 with a tenth of h = 9 added keeps 5.
+TEST(GmshCasing, LobesOfARadialField) {
+  SKIP_WITHOUT_GMSH_CCX();
+  const Component casing = load_component(ci_case(), ci_options());
+  const std::map<int, std::array<int, 3>> triples = node_translations(casing.dofs);
+  const auto field = [&](const std::vector<std::pair<int, double>>& lobes) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(casing.n_dofs());
+    for (const ComponentNode& node : casing.nodes) {
+      const auto t = triples.find(node.id);
+      if (t == triples.end() || t->second[0] < 0) continue;
+      const double theta = std::atan2(node.x.y(), node.x.x());
+      for (const auto& [h, a] : lobes) {
+        const Eigen::Vector3d v = a * (std::cos(h * theta + 0.3) *
+                                           Eigen::Vector3d(std::cos(theta), std::sin(theta), 0) +
+                                       0.2 * std::sin(h * theta) * Eigen::Vector3d::UnitZ());
+        for (int j = 0; j < 3; ++j)
+          u(t->second[static_cast<size_t>(j)]) += v(j);
+      }
+    }
+    return u;
+  };
+  for (int h = 0; h <= 24; ++h)
+    EXPECT_EQ(circumferential_harmonic(casing, field({{h, 1.0}}), 64), h) << "lobes " << h;
+  EXPECT_EQ(circumferential_harmonic(casing, field({{5, 1.0}, {9, 0.1}}), 64), 5);
+}
+
 TEST(GmshCasing, InnerSurfaceUnderEveryTip) {
   SKIP_WITHOUT_GMSH_CCX();
   const ComponentCase c = ci_case();
