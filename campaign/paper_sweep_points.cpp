@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "casing.hpp"
+#include "nodal_diameter_map.hpp"
 #include "critical_step.hpp"
 #include "failure_advice.hpp"
 #include "interaction_lines.hpp"
@@ -144,17 +145,7 @@ public:
   }
 
   std::vector<std::pair<std::string, std::string>> side_files() const override {
-    std::string lines = "family,nodal_diameter,blade_hz,casing_mode,casing_hz,speed_rad_s\n";
-    for (const InteractionLine& l : interaction_lines(m_case, 2, 40)) {
-      lines += std::to_string(l.family) + "," + std::to_string(l.nodal_diameter) + ",";
-      append_csv_number(lines, l.blade_hz);
-      lines += "," + std::to_string(l.casing_mode) + ",";
-      append_csv_number(lines, l.casing_hz);
-      lines += ",";
-      append_csv_number(lines, l.speed_rad_s);
-      lines += "\n";
-    }
-    return {{"interaction_lines.csv", lines}};
+    return {{"interaction_lines.csv", interaction_lines_csv(interaction_lines(m_case, 2, 40))}};
   }
 
   nlohmann::json summary() const override {

@@ -230,6 +230,26 @@ if flexible:
     fig.tight_layout()
     fig.savefig(f"{out}/gap_error_vs_cost.png", dpi=120)
     plt.close(fig)
+    # The nodal-diameter map (the paper's Fig. 3 in 3D) and the interaction
+    # lines, when the campaign wrote them (a bladed-disk rotor).
+    nd_rows = (list(csv.DictReader(open(f"{out}/nodal_diameters.csv")))
+               if os.path.exists(f"{out}/nodal_diameters.csv") else [])
+    interaction = (list(csv.DictReader(open(f"{out}/interaction_lines.csv")))
+                   if os.path.exists(f"{out}/interaction_lines.csv") else [])
+    if nd_rows:
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for part, marker, color in (("bladed-disk", "o", "C0"), ("casing", "s", "C3")):
+            pts = [(int(r["nodal_diameter"]), float(r["frequency_hz"])) for r in nd_rows
+                   if r["part"] == part]
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, color=color, ms=5,
+                    mfc="none", label=part)
+        ax.set_xlabel("nodal diameters (casing: lobes)")
+        ax.set_ylabel("frequency [Hz]")
+        ax.set_title("nodal-diameter map")
+        ax.legend()
+        fig.tight_layout()
+        fig.savefig(f"{out}/nodal_diameter_map.png", dpi=120)
+        plt.close(fig)
     casing_text = (f"Flexible casing: the gmsh ring of inner radius {setup['casing_inner_radius']:g} "
                    f"mm, {setup['casing_thickness']:g} mm thick, {setup['casing_width']:g} mm wide "
                    f"({setup['casing_dofs']:,} dofs), in its {setup['casing_modes']} lowest modes "
@@ -298,6 +318,32 @@ if flexible:
         lines.append(f"| {r['name']} | {r['casing_basis']} | {r['e2_gap']:.3e} "
                      f"| {r['einf_gap']:.3e} | {r['external_work']:.4e} |")
     lines += ["", "![gaps](gap_histories.png)", "", "![gaps against cost](gap_error_vs_cost.png)"]
+    if nd_rows:
+        lines += ["", "## Nodal diameters and interaction lines", "",
+                  "The bladed disk's lowest modes with their nodal diameters (from its sectors' "
+                  "images) and the casing's with their lobes (the harmonic of its radial "
+                  "displacement): nodal_diameters.csv. A disk family of n nodal diameters at "
+                  "f_b (rotating frame) and a casing mode of n lobes at f_c meet when the "
+                  "disk's backward wave and the casing's forward wave travel together, at "
+                  "Omega_int = 2 pi (f_b + f_c) / n (Legrand et al. 2009; "
+                  "interaction_lines.csv).", "", "![nodal-diameter map](nodal_diameter_map.png)",
+                  ""]
+        if interaction:
+            lowest = min(interaction, key=lambda r: float(r["speed_rad_s"]))
+            lines += ["| family | n | f_b [Hz] | casing mode | f_c [Hz] | Omega_int [rad/s] "
+                      "| Omega_int / Omega |", "|---|---|---|---|---|---|---|"]
+            for r in interaction:
+                w = float(r["speed_rad_s"])
+                lines.append(f"| {r['family']} | {r['nodal_diameter']} | "
+                             f"{float(r['blade_hz']):.2f} | {r['casing_mode']} | "
+                             f"{float(r['casing_hz']):.2f} | {w:.1f} | {w / omega:.2f} |")
+            lines += ["", f"The lowest interaction speed is {float(lowest['speed_rad_s']):.1f} "
+                      f"rad/s (family {lowest['family']}, n = {lowest['nodal_diameter']}), "
+                      f"{float(lowest['speed_rad_s']) / omega:.2f} times this case's "
+                      f"{omega:g} rad/s."]
+        else:
+            lines += ["No disk family and casing mode share a nodal diameter in 1 .. N/2 among "
+                      "the modes computed."]
 lines += ["", "![accuracy against cost](error_vs_cost.png)", "",
           "## Response", "", "![response](response.png)", "",
           "![last 5 revolutions](response_last.png)", "",

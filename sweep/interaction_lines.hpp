@@ -35,6 +35,20 @@ struct InteractionLine {
 /// Omega_int = 2 pi (blade_hz + casing_hz) / n [rad/s].
 double interaction_speed(double blade_hz, double casing_hz, int nodal_diameter);
 
+/// A mode and its nodal diameter (the casing's: its lobes).
+struct ClassifiedMode {
+  double frequency_hz = 0.0;
+  int nodal_diameter = 0;
+};
+
+/// The lines of the disk's modes (ascending, N = n_blades sectors, at least
+/// `families` whole families) against the casing's (ascending; casing_mode
+/// counts from 1 in this list), ordered by family, n, casing mode.
+std::vector<InteractionLine> interaction_lines(const std::vector<ClassifiedMode>& disk,
+                                               int n_blades,
+                                               const std::vector<ClassifiedMode>& casing,
+                                               int families);
+
 /// Every (blade family j <= families, casing mode among the lowest
 /// casing_modes) pair of equal nodal diameter n in 1 .. N/2, ordered by
 /// family, n, casing mode.

@@ -26,7 +26,8 @@ OutputSet simulate_output_set() {
 }
 
 OutputSet campaign_output_set() {
-  return {"runs", "modes-bladed-disk.csv", "rubbing.json", "convergence.csv",
+  return {"runs", "modes-bladed-disk.csv", "rubbing.json", "convergence.csv", "nodal_diameters.csv",
+          "interaction_lines.csv", "nodal_diameter_map.png",
           // reports/make_campaign_report.py
           "fig3_nodal_diameters.png", "gap_*.png", "error_vs_modes.png", "relative_time.png",
           "kkt_energy.png", "energy.png", "critical_dt.png",

@@ -42,10 +42,12 @@ CyclicImages cyclic_images(const Component& c, int sectors);
 
 /// The mode's N blocks (3 x places each, sector k's in its own frame), for
 /// nodal_diameter(blocks, N, 3 x places).
-Eigen::VectorXd sector_blocks(const CyclicImages& images, const Eigen::Ref<const Eigen::VectorXd>& mode);
+Eigen::VectorXd sector_blocks(const CyclicImages& images,
+                              const Eigen::Ref<const Eigen::VectorXd>& mode);
 
 /// The nodal diameter in [0, N/2] of a mode of a cyclic component.
-int cyclic_nodal_diameter(const CyclicImages& images, const Eigen::Ref<const Eigen::VectorXd>& mode);
+int cyclic_nodal_diameter(const CyclicImages& images,
+                          const Eigen::Ref<const Eigen::VectorXd>& mode);
 
 /// The lobes in [0, h_max] of a mode of a ring about c's rotation axis.
 int circumferential_harmonic(const Component& c, const Eigen::Ref<const Eigen::VectorXd>& mode,

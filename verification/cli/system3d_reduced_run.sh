@@ -23,7 +23,10 @@
 #     significant digits (1e-9 relative) and
 #     <= 0.05 (the issue's accuracy target for a reduced run); measured
 #     0.0118 (CB), 0.0118 (MacNeal) when written;
-#  3. --casing-modes takes the place of rubbing.casing.modes (refused
+#  3. nodal_diameters.csv: the disk's first family has the diameters of a
+#     6-fold disk (0, 1, 1, 2, 2, 3); interaction_lines.csv: each speed
+#     2 pi (f_b + f_c) / n of its modes' rows, family 1 at n = 1, 2, 3;
+#  4. --casing-modes takes the place of rubbing.casing.modes (refused
 #     naming --casing-modes at 100000, before any basis is built), is
 #     refused for a rigid casing (exit 2); rubbing.casing.modes at the
 #     casing's dofs or more is refused naming the key (exit 2).
@@ -117,6 +120,39 @@ if not sanitized:
             bad.append(line)
         else:
             print("ok  ", line)
+    # The nodal-diameter map: the disk's first family holds the diameters of
+    # ccx's cyclic symmetry of a 6-fold disk, 0 once, 1 and 2 twice, 3 once
+    # (test_gmsh_bladed_disk); each line's speed is 2 pi (f_b + f_c) / n of
+    # its row (csv's 17 digits: 1e-15), f_b the first frequency of the disk
+    # at n, f_c the casing mode's of n lobes.
+    with open(f"{d}/nodal_diameters.csv") as f:
+        modes = list(csv.DictReader(f))
+    disk = [(float(r["frequency_hz"]), int(r["nodal_diameter"])) for r in modes
+            if r["part"] == "bladed-disk"]
+    casing = [(float(r["frequency_hz"]), int(r["nodal_diameter"])) for r in modes
+              if r["part"] == "casing"]
+    first = [n for _, n in disk[:6]]
+    if sorted(first) != [0, 1, 1, 2, 2, 3]:
+        bad.append(f"the disk's first family has diameters {first}, not 0, 1, 1, 2, 2, 3")
+    with open(f"{d}/interaction_lines.csv") as f:
+        lines = list(csv.DictReader(f))
+    wrong = 0
+    for l in lines:
+        n, fb, fc = int(l["nodal_diameter"]), float(l["blade_hz"]), float(l["casing_hz"])
+        w = float(l["speed_rad_s"])
+        if abs(w - 2 * math.pi * (fb + fc) / n) > 1e-15 * w * 4:
+            wrong += 1
+        if l["family"] == "1" and fb != min(f for f, m in disk if m == n):
+            wrong += 1
+        if casing[int(l["casing_mode"]) - 1] != (fc, n):
+            wrong += 1
+    ns = sorted({int(l["nodal_diameter"]) for l in lines if l["family"] == "1"})
+    if wrong or ns != [1, 2, 3]:
+        bad.append(f"interaction lines: {wrong} rows off their modes, family 1 at n = {ns}")
+    else:
+        low = min(lines, key=lambda l: float(l["speed_rad_s"]))
+        print(f"ok   nodal diameters: first family {first}; {len(lines)} interaction lines, "
+              f"the lowest {float(low['speed_rad_s']):.1f} rad/s (n = {low['nodal_diameter']})")
 for b in bad:
     print("FAIL", b)
 sys.exit(1 if bad else 0)

@@ -1,0 +1,59 @@
+#include "nodal_diameter_map.hpp"
+
+#include <algorithm>
+
+#include "cyclic_images.hpp"
+#include "modal_analysis.hpp"
+#include "run_outputs.hpp"
+
+namespace rsi {
+
+NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Component& casing,
+                                    int families, int casing_modes) {
+  NodalDiameterMap map;
+  map.sectors = sectors;
+  const CyclicImages images = cyclic_images(disk, sectors);
+  const Modes d =
+      lowest_modes(disk.stiffness, disk.mass, std::min((families + 1) * sectors, disk.n_dofs()));
+  for (int i = 0; i < d.n_modes(); ++i)
+    map.disk.push_back({d.frequency_hz(i), cyclic_nodal_diameter(images, d.shapes.col(i))});
+  const Modes c =
+      lowest_modes(casing.stiffness, casing.mass, std::min(casing_modes, casing.n_dofs()));
+  // Lobes up to 64: past twice the ring's lowest modes' (4 to 12 on the
+  // gmsh rings), below its nodes' spacing.
+  for (int i = 0; i < c.n_modes(); ++i)
+    map.casing.push_back(
+        {c.frequency_hz(i), circumferential_harmonic(casing, c.shapes.col(i), 64)});
+  map.lines = interaction_lines(map.disk, sectors, map.casing, families);
+  return map;
+}
+
+std::string nodal_diameters_csv(const NodalDiameterMap& map) {
+  std::string csv = "part,index,frequency_hz,nodal_diameter\n";
+  const auto rows = [&csv](const char* part, const std::vector<ClassifiedMode>& modes) {
+    for (size_t i = 0; i < modes.size(); ++i) {
+      csv += std::string(part) + "," + std::to_string(i + 1) + ",";
+      append_csv_number(csv, modes[i].frequency_hz);
+      csv += "," + std::to_string(modes[i].nodal_diameter) + "\n";
+    }
+  };
+  rows("bladed-disk", map.disk);
+  rows("casing", map.casing);
+  return csv;
+}
+
+std::string interaction_lines_csv(const std::vector<InteractionLine>& lines) {
+  std::string csv = "family,nodal_diameter,blade_hz,casing_mode,casing_hz,speed_rad_s\n";
+  for (const InteractionLine& l : lines) {
+    csv += std::to_string(l.family) + "," + std::to_string(l.nodal_diameter) + ",";
+    append_csv_number(csv, l.blade_hz);
+    csv += "," + std::to_string(l.casing_mode) + ",";
+    append_csv_number(csv, l.casing_hz);
+    csv += ",";
+    append_csv_number(csv, l.speed_rad_s);
+    csv += "\n";
+  }
+  return csv;
+}
+
+} // namespace rsi

@@ -1,0 +1,36 @@
+#pragma once
+// The 3D system's nodal-diameter map and interaction lines (issue 27 item
+// 6, the paper's Fig. 3): the bladed disk's lowest modes with their nodal
+// diameters (cyclic_images.hpp), the flexible casing's with their lobes, and
+// the speeds Omega_int = 2 pi (f_b + f_c) / n at which a disk family's
+// backward wave and a casing mode's forward wave of n lobes travel together
+// (sweep/interaction_lines.hpp, Legrand et al. 2009).
+
+#include <string>
+#include <vector>
+
+#include "component.hpp"
+#include "interaction_lines.hpp"
+
+namespace rsi {
+
+struct NodalDiameterMap {
+  int sectors = 0;
+  std::vector<ClassifiedMode> disk;   ///< ascending
+  std::vector<ClassifiedMode> casing; ///< ascending
+  std::vector<InteractionLine> lines;
+};
+
+/// `families` whole families of the disk (families + 1 times N modes, the
+/// last family's pairs whole) and the casing's `casing_modes` lowest.
+NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Component& casing,
+                                    int families, int casing_modes);
+
+/// part,index,frequency_hz,nodal_diameter (part: bladed-disk or casing).
+std::string nodal_diameters_csv(const NodalDiameterMap& map);
+
+/// family,nodal_diameter,blade_hz,casing_mode,casing_hz,speed_rad_s (17
+/// significant digits): the sweeps' interaction_lines.csv, 2D and 3D.
+std::string interaction_lines_csv(const std::vector<InteractionLine>& lines);
+
+} // namespace rsi
