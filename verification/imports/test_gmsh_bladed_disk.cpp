@@ -136,14 +136,24 @@ std::vector<std::vector<double>> cyclic_eigenvalues(const std::string& dat, int 
   return by_diameter;
 }
 
-TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
+/// Why the CI model cannot be built here (gmsh or ccx not on PATH, said), or empty.
+std::string gmsh_ccx_missing() {
   const std::string missing = testing::missing_programs({"gmsh", "ccx"});
-  if (!missing.empty()) {
+  if (!missing.empty())
     std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());
-    GTEST_SKIP() << missing << " not on PATH";
-  }
-  const std::string case_path = std::string(RSI_SOURCE_DIR) + "/data/cases/bladed-disk3d-ci.json";
-  const ComponentCase c = parse_component_case(read_case_document(case_path), case_path);
+  return missing;
+}
+
+/// data/cases/bladed-disk3d-ci.json.
+ComponentCase ci_case() {
+  const std::string path = std::string(RSI_SOURCE_DIR) + "/data/cases/bladed-disk3d-ci.json";
+  return parse_component_case(read_case_document(path), path);
+}
+
+TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
+  const std::string missing = gmsh_ccx_missing();
+  if (!missing.empty()) GTEST_SKIP() << missing << " not on PATH";
+  const ComponentCase c = ci_case();
   ASSERT_EQ(c.source, ComponentSource::gmsh_bladed_disk);
   const GmshBladedDiskSpec& spec = c.gmsh_bladed_disk;
   const std::filesystem::path dir =
@@ -234,13 +244,9 @@ TEST(GmshBladedDisk, NodalDiametersAgainstCcxCyclicSymmetry) {
 // scaled by cos(d k alpha + 0.3) has nodal diameter d, d = 0 .. N/2, and
 // the blocks of sector_blocks are that scale times sector 0's (to round-off).
 TEST(GmshBladedDisk, CyclicImagesOfATurnedField) {
-  const std::string missing = testing::missing_programs({"gmsh", "ccx"});
-  if (!missing.empty()) {
-    std::printf("not run: %s not on PATH (Debian gmsh, calculix-ccx)\n", missing.c_str());
-    GTEST_SKIP() << missing << " not on PATH";
-  }
-  const std::string case_path = std::string(RSI_SOURCE_DIR) + "/data/cases/bladed-disk3d-ci.json";
-  const ComponentCase c = parse_component_case(read_case_document(case_path), case_path);
+  const std::string missing = gmsh_ccx_missing();
+  if (!missing.empty()) GTEST_SKIP() << missing << " not on PATH";
+  const ComponentCase c = ci_case();
   ComponentLoadOptions options;
   const char* cache = std::getenv("RSI_CCX_CACHE");
   options.ccx_cache = cache && *cache ? cache : RSI_BINARY_DIR "/ccx-cache";
