@@ -715,7 +715,9 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     c.boundary_node_set = "INNER";
   } else {
     comp.fail(comp.full("boundary"),
-              "missing (required for a calculix_deck or calculix_sector source)");
+              std::string("missing (required for a ") +
+                  (c.source == ComponentSource::calculix_sector ? "calculix_sector" : "calculix_deck") +
+                  " source)");
   }
 
   comp.claim("mass");
