@@ -36,7 +36,11 @@ component_diameter(const ComponentCase& c, const Component& component) {
     };
   }
   if (c.source == ComponentSource::gmsh_casing) {
-    auto ring = std::make_shared<const Component>(component);
+    // Its nodes, dofs and axis: what the lobes read (not K and M).
+    auto ring = std::make_shared<Component>();
+    ring->nodes = component.nodes;
+    ring->dofs = component.dofs;
+    ring->rotation_axis = component.rotation_axis;
     return [ring](const Eigen::VectorXd& x) -> std::optional<int> {
       return circumferential_harmonic(*ring, x, 64);
     };

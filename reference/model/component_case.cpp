@@ -44,6 +44,15 @@ std::string string_value(ObjectReader& r, const json& object, const std::string&
   return v.get<std::string>();
 }
 
+/// A deck's set or surface name as the case gives it, upper case (ccx's own
+/// names are: *NSET, NSET=tip is TIP).
+std::string deck_name(ObjectReader& r, const json& object, const std::string& key) {
+  std::string name = string_value(r, object, key);
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char ch) { return std::toupper(ch); });
+  return name;
+}
+
 std::vector<int> integer_list(ObjectReader& r, const json& object, const std::string& key,
                               long low, long high) {
   r.claim(key);
@@ -307,9 +316,7 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
     if (cj.contains("modes")) out.casing_modes = static_cast<int>(casing.integer("modes", 1, 100000));
     casing.claim("surface");
     if (cj.contains("surface")) {
-      out.casing_surface = string_value(casing, cj, "surface");
-      std::transform(out.casing_surface.begin(), out.casing_surface.end(),
-                     out.casing_surface.begin(), [](unsigned char ch) { return std::toupper(ch); });
+      out.casing_surface = deck_name(casing, cj, "surface");
     }
     casing.finish();
   } else {
@@ -666,13 +673,8 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     c.source = ComponentSource::calculix_sector;
     c.source_path = resolve(string_value(x, xj, "deck"), path);
     c.sectors = static_cast<int>(x.integer("sectors", 3, 200));
-    const auto upper = [](std::string name) {
-      std::transform(name.begin(), name.end(), name.begin(),
-                     [](unsigned char ch) { return std::toupper(ch); });
-      return name;
-    };
-    c.sector_left = upper(string_value(x, xj, "left"));
-    c.sector_right = upper(string_value(x, xj, "right"));
+    c.sector_left = deck_name(x, xj, "left");
+    c.sector_right = deck_name(x, xj, "right");
     x.finish();
   } else if (casing) {
     if (!sj.at("gmsh_casing").is_object())
@@ -701,9 +703,7 @@ ComponentCase parse_component_case(const json& document, const std::string& path
       if (c.source == ComponentSource::matrix_market)
         boundary.fail(boundary.full("node_set"),
                       "needs a calculix_deck or gmsh_blade source (an *NSET of its deck)");
-      c.boundary_node_set = string_value(boundary, bj, "node_set");
-      std::transform(c.boundary_node_set.begin(), c.boundary_node_set.end(),
-                     c.boundary_node_set.begin(), [](unsigned char ch) { return std::toupper(ch); });
+      c.boundary_node_set = deck_name(boundary, bj, "node_set");
     }
     boundary.finish();
   } else if (c.source == ComponentSource::matrix_market) {
