@@ -12,6 +12,7 @@
 #include "failure_advice.hpp"
 #include "interruption_flag.hpp"
 #include "modal_analysis.hpp"
+#include "nodal_diameter_map.hpp"
 #include "reduction.hpp"
 #include "rigid_surface_contact.hpp"
 #include "rubbing_indicators.hpp"
@@ -47,6 +48,9 @@ constexpr int campbell_grid = 41;
 struct PreparedRun {
   ComponentSweepRun run;
   std::optional<ReducedBasis> basis; ///< reduced methods
+  /// Reduced methods against the flexible casing: its modes and static
+  /// correction, the same at every speed.
+  std::optional<CasingBasis> casing;
   /// Reduced methods with rotation effects: the subspace each speed's basis is reduced in.
   std::shared_ptr<const SpeedSubspace> subspace;
   double basis_seconds = 0.0;
@@ -116,10 +120,14 @@ public:
            m_runs[static_cast<size_t>(run)].coordinates;
   }
 
+  /// Against the flexible casing the tip's radial motion is not read from
+  /// the gap (the casing moves too): column 8 is the response dof's largest
+  /// |u| instead (rubbing_indicators.hpp).
   std::string csv_header() const override {
-    return std::string("speed_rad_s,run,method,modes,status,diverged,rows,max_tip_radial,"
-                       "max_contact_force,contact_fraction,energy_ratio,balance_residual,f1_hz,"
-                       "a1,f2_hz,a2,f3_hz,a3") +
+    return std::string("speed_rad_s,run,method,modes,status,diverged,rows,") +
+           (flexible() ? "max_abs_response" : "max_tip_radial") +
+           ",max_contact_force,contact_fraction,energy_ratio,balance_residual,f1_hz,"
+           "a1,f2_hz,a2,f3_hz,a3" +
            (liner() ? ",max_wear_depth,wear_lobes,plastic_work\n" : "\n");
   }
 
@@ -128,23 +136,29 @@ public:
     const RubbingSetup& setup = m_model.setup();
     const double period = 2.0 * M_PI / std::abs(speed);
     const double interval = period / setup.steps_per_revolution * setup.output_every;
-    // The casing law of this speed, for g0_c(t) (the runs build their own).
-    const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
-                                          : ImposedGap::constant(setup.gap);
-    // With rotation effects the model at this speed; the indicators' radial
-    // tip displacement is then measured from the static deflected tip
-    // (the casing law's g0_c(t) - growth_c).
+    // The rigid casing's law of this speed, for g0_c(t) (the runs build
+    // their own); against the flexible casing the gap is the two bodies'.
     std::optional<RubbingModel> spinning;
     if (m_rotation) spinning = model_at(speed, r.run.method == "full");
     const RubbingModel& model = spinning ? *spinning : m_model;
-    std::vector<RigidSurfaceNode> nodes = rigid_surface_nodes(model.component(), model.contact_nodes());
-    for (size_t k = 0; k < model.problem.casing.tip_growth.size(); ++k)
-      nodes[k].growth = model.problem.casing.tip_growth[k];
-    const RigidSurfaceContact casing(std::move(nodes), gap, speed, setup.friction_coefficient,
-                                     setup.sliding_against_rotation ? -speed : speed,
-                                     m_model.component().rotation_axis);
-    RubbingIndicatorAccumulator indicators(casing, m_sweep.transient_revolutions * period,
-                                           interval);
+    std::optional<RigidSurfaceContact> casing;
+    if (!flexible()) {
+      const ImposedGap gap = setup.oval_gap ? ImposedGap::oval(setup.gap, setup.gap_width)
+                                            : ImposedGap::constant(setup.gap);
+      // With rotation effects the indicators' radial tip displacement is
+      // measured from the static deflected tip (g0_c(t) - growth_c).
+      std::vector<RigidSurfaceNode> nodes =
+          rigid_surface_nodes(model.component(), model.contact_nodes());
+      for (size_t k = 0; k < model.problem.casing.tip_growth.size(); ++k)
+        nodes[k].growth = model.problem.casing.tip_growth[k];
+      casing.emplace(std::move(nodes), gap, speed, setup.friction_coefficient,
+                     setup.sliding_against_rotation ? -speed : speed,
+                     m_model.component().rotation_axis);
+    }
+    const double transient = m_sweep.transient_revolutions * period;
+    RubbingIndicatorAccumulator indicators =
+        casing ? RubbingIndicatorAccumulator(*casing, transient, interval)
+               : RubbingIndicatorAccumulator(transient, interval);
     RubbingRunOptions options;
     options.method = r.run.method;
     options.modes = r.run.modes;
@@ -152,6 +166,7 @@ public:
     options.revolutions_key = "sweep.revolutions";
     options.rotation_speed = speed;
     options.basis = r.basis ? &*r.basis : nullptr;
+    options.casing_basis = r.casing ? &*r.casing : nullptr;
     std::optional<ReducedBasis> at_speed;
     options.checkpoint = throw_if_interrupted;
     SweepTaskResult out;
@@ -171,7 +186,7 @@ public:
                                   ? result.summary.energy_balance_error / result.summary.energy_scale
                                   : 0.0;
       out.row = csv_row(speed, r.run, run_status_word(result.summary), indicators.finish(),
-                        residual);
+                        residual, flexible());
       if (liner()) {
         // The wear the run left (its whole window, the transient included).
         out.row.pop_back();
@@ -199,6 +214,7 @@ public:
 
   std::vector<std::pair<std::string, std::string>> side_files() const override {
     if (m_rotation) return rotating_side_files();
+    if (flexible()) return system_side_files();
     std::string lines = "run,mode,blade_hz,engine_order,casing_harmonic,speed_rad_s\n";
     const bool oval = m_model.setup().oval_gap;
     const double sign = m_sweep.speeds.front() > 0.0 ? 1.0 : -1.0;
@@ -226,7 +242,10 @@ public:
     s["output_every"] = setup.output_every;
     s["contact_nodes"] = m_model.contact_nodes().size();
     s["response"] = m_model.response_name();
-    s["gap"] = setup.oval_gap ? "oval, 2 lobes" : "constant";
+    s["gap"] = flexible() ? "the flexible casing's (rubbing.casing)"
+               : setup.oval_gap ? "oval, 2 lobes"
+                                : "constant";
+    if (flexible()) s["casing_modes"] = setup.casing_modes;
     s["tip_sliding"] = setup.sliding_against_rotation ? "against_rotation" : "with_rotation";
     s["friction_coefficient"] = setup.friction_coefficient;
     s["modal_ratio"] = m_model.component_case().damping.modal_ratio;
@@ -263,11 +282,26 @@ public:
     return summary;
   }
 
-  std::string report_script() const override { return "make_component_sweep_report.py"; }
+  std::string report_script() const override {
+    return flexible() ? "make_system_sweep_report.py" : "make_component_sweep_report.py";
+  }
 
 private:
   /// The case wears an abradable liner: the rows carry its columns.
   bool liner() const { return m_model.problem.casing.liner.has_value(); }
+  /// Against the flexible casing (rubbing.casing), not a rigid one.
+  bool flexible() const { return m_model.setup().casing.has_value(); }
+
+  /// A bladed disk against the flexible casing: the nodal-diameter map and
+  /// its interaction lines Omega_int = 2 pi (f_b + f_c) / n, as rsi campaign
+  /// writes them (nodal_diameter_map.hpp; the full model's, the same for
+  /// every run); another rotor: none.
+  std::vector<std::pair<std::string, std::string>> system_side_files() const {
+    const std::optional<NodalDiameterMap> map = system_nodal_diameter_map(m_model);
+    if (!map) return {};
+    return {{"nodal_diameters.csv", nodal_diameters_csv(*map)},
+            {"interaction_lines.csv", interaction_lines_csv(map->lines)}};
+  }
 
   static std::string row_start(double speed, const ComponentSweepRun& run,
                                const std::string& status) {
@@ -278,9 +312,10 @@ private:
   }
 
   static std::string csv_row(double speed, const ComponentSweepRun& run, const std::string& status,
-                             const RubbingIndicators& ind, double residual) {
+                             const RubbingIndicators& ind, double residual, bool flexible) {
     std::string row = row_start(speed, run, status) + "," + std::to_string(ind.rows);
-    for (double x : {ind.max_tip_radial, ind.max_contact_force, ind.contact_fraction,
+    for (double x : {flexible ? ind.max_abs_response : ind.max_tip_radial, ind.max_contact_force,
+                     ind.contact_fraction,
                      ind.energy_ratio, residual}) {
       row += ",";
       if (ind.rows > 0 && std::isfinite(x)) append_csv_number(row, x);
@@ -440,6 +475,8 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
       r.coordinates = static_cast<int>(model.component().boundary.size()) + r.run.modes;
     } else if (r.run.method != "full") {
       const Clock::time_point t = Clock::now();
+      // The casing's count checked before the rotor's basis (as run_rubbing).
+      if (model.setup().casing) r.casing = rubbing_casing_basis(model, 0);
       try {
         r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
                          r.run.method, r.run.modes);
@@ -447,7 +484,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
         throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
       }
       r.basis_seconds = seconds_since(t);
-      r.coordinates = r.basis->n_reduced();
+      r.coordinates = r.basis->n_reduced() + (r.casing ? r.casing->size() : 0);
     }
     if (!rotation) r.frequencies_hz = natural_frequencies(model, r);
   }

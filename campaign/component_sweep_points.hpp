@@ -13,6 +13,14 @@
 // it forces at 2 Omega / 2 pi and its harmonics: EO = 2, 4, 6, 8, 10 are
 // the casing's own lines (column `casing_harmonic` = 1); the odd orders are
 // listed for the map's reading (a constant gap forces at none).
+//
+// A bladed disk against the flexible casing (rubbing.casing; issue 27 item
+// 6): each speed's run is the system's (the casing in its modes plus static
+// correction for the reduced runs, that basis built once), the indicators'
+// column 8 is the response dof's largest |u| (the gap is the two bodies'),
+// and beside sweep.csv are the campaign's nodal_diameters.csv and
+// interaction_lines.csv (nodal_diameter_map.hpp: Omega_int = 2 pi (f_b +
+// f_c) / n), the report make_system_sweep_report.py.
 
 #include <memory>
 #include <string>

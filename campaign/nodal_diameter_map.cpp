@@ -28,6 +28,20 @@ NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Co
   return map;
 }
 
+int rotor_sectors(const ComponentCase& c) {
+  if (c.source == ComponentSource::gmsh_bladed_disk) return c.gmsh_bladed_disk.sectors;
+  if (c.source == ComponentSource::calculix_sector) return c.sectors;
+  return 0;
+}
+
+std::optional<NodalDiameterMap> system_nodal_diameter_map(const RubbingModel& model) {
+  const int sectors = rotor_sectors(model.component_case());
+  if (sectors == 0 || !model.setup().casing) return std::nullopt;
+  const Component& casing =
+      model.problem.structures.at(static_cast<size_t>(model.problem.casing.structure));
+  return nodal_diameter_map(model.component(), sectors, casing, 2, 30);
+}
+
 std::string nodal_diameters_csv(const NodalDiameterMap& map) {
   std::string csv = "part,index,frequency_hz,nodal_diameter\n";
   const auto rows = [&csv](const char* part, const std::vector<ClassifiedMode>& modes) {

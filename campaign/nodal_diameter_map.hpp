@@ -6,11 +6,13 @@
 // backward wave and a casing mode's forward wave of n lobes travel together
 // (sweep/interaction_lines.hpp, Legrand et al. 2009).
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "component.hpp"
 #include "interaction_lines.hpp"
+#include "rubbing_run.hpp"
 
 namespace rsi {
 
@@ -25,6 +27,16 @@ struct NodalDiameterMap {
 /// last family's pairs whole) and the casing's `casing_modes` lowest.
 NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Component& casing,
                                     int families, int casing_modes);
+
+/// The bladed disk's sectors (a gmsh_bladed_disk or calculix_sector rotor),
+/// 0 for another rotor.
+int rotor_sectors(const ComponentCase& c);
+
+/// The map of a bladed-disk rotor against its flexible casing, as `rsi
+/// campaign` and `rsi sweep` write it: two families of the disk (3N modes),
+/// the casing's 30 lowest (lobes 0 to 15 on the gmsh rings); nullopt for
+/// another rotor or a rigid casing.
+std::optional<NodalDiameterMap> system_nodal_diameter_map(const RubbingModel& model);
 
 /// part,index,frequency_hz,nodal_diameter (part: bladed-disk or casing).
 std::string nodal_diameters_csv(const NodalDiameterMap& map);

@@ -218,17 +218,29 @@ std::unique_ptr<ComponentCasingPart> solid_casing_part(const RubbingModel& model
                                            basis, std::move(load));
 }
 
+} // namespace
+
+CasingBasis rubbing_casing_basis(const RubbingModel& model, int modes) {
+  if (!model.setup().casing)
+    throw std::invalid_argument("rubbing_casing_basis: the case has no flexible casing");
+  return modes > 0 ? solid_casing_basis(model, modes, "--casing-modes")
+                   : solid_casing_basis(model, model.setup().casing_modes,
+                                        "key 'rubbing.casing.modes'");
+}
+
+namespace {
+
 RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOptions& options,
                                std::int64_t n_samples, const ComponentRowSink& sink) {
   const RubbingSetup& setup = model.setup();
   const double omega = run_speed(model, options);
   // The flexible casing's basis first (its count checked before the
   // rotor's basis is built); its build time is added to basis_seconds.
-  std::optional<CasingBasis> casing_basis;
-  if (setup.casing)
-    casing_basis = options.casing_modes > 0
-                       ? solid_casing_basis(model, options.casing_modes, "--casing-modes")
-                       : solid_casing_basis(model, setup.casing_modes, "key 'rubbing.casing.modes'");
+  std::optional<CasingBasis> own_casing;
+  if (setup.casing && options.casing_basis == nullptr)
+    own_casing = rubbing_casing_basis(model, options.casing_modes);
+  const CasingBasis* casing_basis =
+      options.casing_basis != nullptr ? options.casing_basis : own_casing ? &*own_casing : nullptr;
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<ReducedBasis> own;
   if (options.basis == nullptr)

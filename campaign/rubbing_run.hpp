@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "casing_basis.hpp"
 #include "component_case.hpp"
 #include "history.hpp"
 #include "problem.hpp"
@@ -72,6 +73,10 @@ struct RubbingRunOptions {
   /// speeds share it: the rotation enters only through the contact); it
   /// must be reduce()'s of this model, method and modes. nullptr: built here.
   const ReducedBasis* basis = nullptr;
+  /// Against the flexible casing, a reduced run's casing basis built once
+  /// for several runs (rsi sweep's speeds): rubbing_casing_basis() of this
+  /// model and casing_modes. nullptr: built here.
+  const CasingBasis* casing_basis = nullptr;
   std::function<void()> checkpoint;
   std::function<void(double)> progress;
 };
@@ -87,6 +92,12 @@ struct RubbingRun {
   int wear_n_theta = 0;
   int wear_n_axial = 0;
 };
+
+/// A reduced run's flexible casing: its `modes` lowest modes (0: the case's
+/// rubbing.casing.modes) plus the static correction for its load. Throws
+/// CaseError naming the count's key (or --casing-modes) when it is not
+/// below the casing's dofs.
+CasingBasis rubbing_casing_basis(const RubbingModel& model, int modes);
 
 /// The most steps a run counts (RunSummary's int), and the largest
 /// history.csv a run may write [bytes] (as the paper's case, about 24

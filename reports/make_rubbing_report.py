@@ -30,6 +30,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from nodal_diameter_figure import draw_nodal_diameter_map  # noqa: E402
+
 out = sys.argv[1]
 setup = json.load(open(f"{out}/rubbing.json"))
 rows = list(csv.DictReader(open(f"{out}/convergence.csv")))
@@ -237,19 +241,7 @@ if flexible:
     interaction = (list(csv.DictReader(open(f"{out}/interaction_lines.csv")))
                    if os.path.exists(f"{out}/interaction_lines.csv") else [])
     if nd_rows:
-        fig, ax = plt.subplots(figsize=(6, 4))
-        for part, marker, color in (("bladed-disk", "o", "C0"), ("casing", "s", "C3")):
-            pts = [(int(r["nodal_diameter"]), float(r["frequency_hz"])) for r in nd_rows
-                   if r["part"] == part]
-            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, color=color, ms=5,
-                    mfc="none", label=part)
-        ax.set_xlabel("nodal diameters (casing: lobes)")
-        ax.set_ylabel("frequency [Hz]")
-        ax.set_title("nodal-diameter map")
-        ax.legend()
-        fig.tight_layout()
-        fig.savefig(f"{out}/nodal_diameter_map.png", dpi=120)
-        plt.close(fig)
+        draw_nodal_diameter_map(nd_rows, f"{out}/nodal_diameter_map.png")
     casing_text = (f"Flexible casing: the gmsh ring of inner radius {setup['casing_inner_radius']:g} "
                    f"mm, {setup['casing_thickness']:g} mm thick, {setup['casing_width']:g} mm wide "
                    f"({setup['casing_dofs']:,} dofs), in its {setup['casing_modes']} lowest modes "

@@ -9,7 +9,12 @@ namespace rsi {
 
 RubbingIndicatorAccumulator::RubbingIndicatorAccumulator(const RigidSurfaceContact& casing,
                                                          double transient, double output_interval)
-    : m_casing(casing)
+    : RubbingIndicatorAccumulator(transient, output_interval) {
+  m_casing = &casing;
+}
+
+RubbingIndicatorAccumulator::RubbingIndicatorAccumulator(double transient, double output_interval)
+    : m_casing(nullptr)
     , m_transient(transient)
     , m_interval(output_interval) {
   if (!(output_interval > 0.0) || !(transient >= 0.0))
@@ -21,18 +26,21 @@ void RubbingIndicatorAccumulator::add(const HistoryRow& row, double response) {
   // few ulps below it.
   if (row.time < m_transient - 1e-6 * m_interval) return;
   const Eigen::Index nc = row.gap.size();
-  if (nc != m_casing.n_contacts() || row.lambda.size() != nc)
+  if ((m_casing && nc != m_casing->n_contacts()) || row.lambda.size() != nc)
     throw std::invalid_argument("RubbingIndicatorAccumulator: a gap and a lambda_n a contact expected");
   bool closed = false;
   for (Eigen::Index c = 0; c < nc; ++c) {
-    const double radial = m_casing.imposed_gap(static_cast<int>(c), row.time) - row.gap(c);
-    m_out.max_tip_radial = std::max(m_out.max_tip_radial, std::abs(radial));
+    if (m_casing) {
+      const double radial = m_casing->imposed_gap(static_cast<int>(c), row.time) - row.gap(c);
+      m_out.max_tip_radial = std::max(m_out.max_tip_radial, std::abs(radial));
+    }
     m_out.max_contact_force = std::max(m_out.max_contact_force, row.lambda(c));
     closed = closed || row.lambda(c) > 0.0;
   }
   m_contact_rows += closed;
   if (m_out.rows == 0) m_first_energy = row.energy;
   m_last_energy = row.energy;
+  m_out.max_abs_response = std::max(m_out.max_abs_response, std::abs(response));
   m_response.push_back(response);
   ++m_out.rows;
 }

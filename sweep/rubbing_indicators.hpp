@@ -12,8 +12,12 @@
 // - energy_ratio: E(last row) / E(first row after the transient), as the
 //   paper's sweep; undefined (NaN) when E(first) is not > 0 (a gap never
 //   closed leaves the blade at rest: E = 0 throughout);
+// - max_abs_response: the largest |u| of the response dof [model length];
 // - the three largest spectral peaks of the response dof
 //   (response_spectrum.hpp: Hann window, mean removed).
+// Against a flexible casing the gap is the two bodies' (the casing moves
+// too): no imposed gap, max_tip_radial is not read (0) and the sweep writes
+// max_abs_response in its place.
 // The energy balance residual is the run's own monitor (its summary), not
 // read here.
 
@@ -28,6 +32,7 @@ namespace rsi {
 struct RubbingIndicators {
   int rows = 0; ///< history rows read (t >= transient)
   double max_tip_radial = 0.0;
+  double max_abs_response = 0.0;
   double max_contact_force = 0.0;
   double contact_fraction = 0.0;
   double energy_ratio = 0.0; ///< NaN when undefined (E(first) <= 0)
@@ -41,6 +46,8 @@ public:
   /// skipped; `output_interval` [s]: the time between rows.
   RubbingIndicatorAccumulator(const RigidSurfaceContact& casing, double transient,
                               double output_interval);
+  /// Against a flexible casing: no imposed gap (max_tip_radial stays 0).
+  RubbingIndicatorAccumulator(double transient, double output_interval);
 
   /// Reads one row and the response dof beside it.
   void add(const HistoryRow& row, double response);
@@ -50,7 +57,7 @@ public:
   RubbingIndicators finish() const;
 
 private:
-  const RigidSurfaceContact& m_casing;
+  const RigidSurfaceContact* m_casing; ///< null: a flexible casing
   double m_transient;
   double m_interval;
   RubbingIndicators m_out;

@@ -37,9 +37,11 @@ OutputSet campaign_output_set() {
 }
 
 OutputSet sweep_output_set() {
-  return {"sweep.csv", "interaction_lines.csv", "campbell.csv", "sweep_summary.json",
-          // reports/make_sweep_report.py
-          "sweep_map.png", "sweep_campbell.png", "sweep_report.md"};
+  return {"sweep.csv", "interaction_lines.csv", "campbell.csv", "nodal_diameters.csv",
+          "sweep_summary.json",
+          // reports/make_sweep_report.py, make_component_sweep_report.py,
+          // make_system_sweep_report.py
+          "sweep_map.png", "sweep_campbell.png", "nodal_diameter_map.png", "sweep_report.md"};
 }
 
 OutputSet modal_campaign_output_set() {

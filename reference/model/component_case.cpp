@@ -812,9 +812,6 @@ ComponentCase parse_component_case(const json& document, const std::string& path
     if (!c.rubbing)
       top.fail("sweep", "needs the case's \"rubbing\" object (a component's sweep runs its "
                         "rubbing set-up at each speed)");
-    if (c.rubbing->casing)
-      top.fail("sweep", "against the flexible casing (rubbing.casing) is not written yet (issue "
-                        "27): remove it");
     c.sweep = read_component_sweep(top, document.at("sweep"), *c.rubbing);
   }
   c.damping = read_damping(top, document);

@@ -18,8 +18,8 @@
 #  in both the energy balance |E - W_ext - W_contact| <= 1e-8 of the
 #  energy scale (the monitor's own test, which would stop the run);
 #  3. a case with both rubbing.gap and rubbing.casing refused (exit 2,
-#     naming rubbing.gap), and a sweep (exit 2, naming sweep: not written
-#     yet). The reduced runs and the campaign: system3d_reduced_run.sh.
+#     naming rubbing.gap). The reduced runs and the campaign:
+#     system3d_reduced_run.sh; the sweep: sweep/sweep_system3d.sh.
 # SANITIZED = 1 (an ASan/UBSan build): 0.0005 and 0.001 revolution (240
 # and 479 steps), the same checks on the same code.
 # Skipped (exit 77) without gmsh or ccx.
@@ -110,20 +110,6 @@ if [ "$status" -ne 2 ] || ! grep -q "rubbing.gap" "$work/bad.log"; then
 else
   echo "ok   rubbing.gap with rubbing.casing refused: $(grep -m1 'rubbing.gap' "$work/bad.log")"
 fi
-
-# A sweep: refused when the case is read.
-/usr/bin/python3 "$src/verification/cli/case_variant.py" "$case" "$work/sweep.json" \
-  'sweep={"speeds": [1000, 1100]}' >/dev/null
-for refused in "sweep sweep"; do
-  set -- $refused
-  "$rsi" "$1" "$work/$1.json" --ccx-cache "$cache" --out "$work/$1-out" >"$work/$1.log" 2>&1
-  status=$?
-  if [ "$status" -ne 2 ] || ! grep -q "key '$2'" "$work/$1.log"; then
-    fail "rsi $1 with rubbing.casing: exit $status, expected 2 naming $2: $(cat "$work/$1.log")"
-  else
-    echo "ok   rsi $1 refused: $(grep -m1 "key '$2'" "$work/$1.log")"
-  fi
-done
 
 [ "$failures" -eq 0 ] || { echo "system3d_full_run: $failures failure(s)"; exit 1; }
 echo "system3d_full_run: all checks passed"

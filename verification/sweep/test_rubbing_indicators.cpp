@@ -2,7 +2,9 @@
 // on rows whose answers are known: the transient cut, the contact nodes'
 // radial displacement u_r = g0(t) - g (constant gap, and the oval casing at
 // its deepest point), the contact fraction as a share of rows (not of
-// (node, row) pairs), the energy ratio and its undefined case.
+// (node, row) pairs), the energy ratio and its undefined case; against a
+// flexible casing (no imposed gap) the largest |u| of the response dof and
+// the rest as before.
 
 #include <cmath>
 
@@ -63,6 +65,40 @@ TEST(RubbingIndicators, OvalGapIsReadAtTheRowsTime) {
   EXPECT_NEAR(s.max_tip_radial, g_m, 1e-15);
   EXPECT_TRUE(std::isnan(s.energy_ratio)); // E = 0 from the first row: undefined
   EXPECT_EQ(s.contact_fraction, 0.0);
+}
+
+TEST(RubbingIndicators, FlexibleCasingReadsTheResponseNotTheGap) {
+  // The rows of KnownRowsGiveKnownIndicators without a casing law: the gap
+  // is the two bodies' and is not read; the response 0.5 i, its largest
+  // |u| after the transient 0.5 x 5 at 5 ms (exact in binary); a response
+  // of -3 before the transient is skipped.
+  RubbingIndicatorAccumulator acc(2e-3, 1e-3);
+  for (int i = 0; i < 6; ++i) {
+    Eigen::VectorXd gap(3), lambda(3); // any number of contacts: no law to match
+    gap << -9.0, 1.0, 2.0;
+    lambda << (i == 3 ? 50.0 : 0.0), (i >= 3 ? 20.0 * i : 0.0), 0.0;
+    const HistoryRow row{i * 1e-3, gap, lambda, 1.0 + i, 0.0, 0.0, 0.0};
+    acc.add(row, i < 2 ? -3.0 : 0.5 * i);
+  }
+  const RubbingIndicators s = acc.finish();
+  std::printf("rows %d, max |u| %.17g, max |u_r| %.17g, force %.17g, fraction %.17g, energy "
+              "ratio %.17g\n",
+              s.rows, s.max_abs_response, s.max_tip_radial, s.max_contact_force,
+              s.contact_fraction, s.energy_ratio);
+  EXPECT_EQ(s.rows, 4);
+  EXPECT_EQ(s.max_abs_response, 2.5);
+  EXPECT_EQ(s.max_tip_radial, 0.0); // not read: no imposed gap
+  EXPECT_EQ(s.max_contact_force, 100.0);
+  EXPECT_EQ(s.contact_fraction, 3.0 / 4.0);
+  EXPECT_EQ(s.energy_ratio, 6.0 / 3.0);
+}
+
+TEST(RubbingIndicators, RigidCasingRefusesAnotherContactCount) {
+  const RigidSurfaceContact casing(two_nodes(), ImposedGap::constant(0.1), 1000.0, 0.1);
+  RubbingIndicatorAccumulator acc(casing, 0.0, 1e-3);
+  const Eigen::VectorXd three = Eigen::VectorXd::Zero(3);
+  EXPECT_THROW(acc.add(HistoryRow{0.0, three, three, 0.0, 0.0, 0.0, 0.0}, 0.0),
+               std::invalid_argument);
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -91,28 +92,16 @@ void run_entry(const RubbingModel& model, RubbingCampaignRun& entry, const std::
                     wear_csv(entry.run.wear, entry.run.wear_n_theta, entry.run.wear_n_axial));
 }
 
-/// The bladed disk's sectors (a gmsh_bladed_disk or calculix_sector rotor),
-/// 0 for another rotor.
-int rotor_sectors(const ComponentCase& c) {
-  if (c.source == ComponentSource::gmsh_bladed_disk) return c.gmsh_bladed_disk.sectors;
-  if (c.source == ComponentSource::calculix_sector) return c.sectors;
-  return 0;
-}
-
 /// nodal_diameters.csv and interaction_lines.csv of a bladed disk against
-/// the flexible casing: two families of the disk, the casing's 30 lowest
-/// modes (lobes 1 to 12 on the gmsh rings).
+/// the flexible casing (nodal_diameter_map.hpp), nothing for another rotor.
 void write_nodal_diameter_map(const RubbingModel& model, const std::string& stage,
                               const std::string& out, StagedOutput& output) {
-  const int sectors = rotor_sectors(model.component_case());
-  if (sectors == 0) return;
-  const Component& casing =
-      model.problem.structures.at(static_cast<size_t>(model.problem.casing.structure));
-  const NodalDiameterMap map = nodal_diameter_map(model.component(), sectors, casing, 2, 30);
-  write_text_file(stage + "/nodal_diameters.csv", nodal_diameters_csv(map));
-  write_text_file(stage + "/interaction_lines.csv", interaction_lines_csv(map.lines));
+  const std::optional<NodalDiameterMap> map = system_nodal_diameter_map(model);
+  if (!map) return;
+  write_text_file(stage + "/nodal_diameters.csv", nodal_diameters_csv(*map));
+  write_text_file(stage + "/interaction_lines.csv", interaction_lines_csv(map->lines));
   output.announce("wrote " + out + "/nodal_diameters.csv and " + out +
-                  "/interaction_lines.csv (" + std::to_string(map.lines.size()) +
+                  "/interaction_lines.csv (" + std::to_string(map->lines.size()) +
                   " interaction lines)\n");
 }
 

@@ -97,7 +97,8 @@ SweepCommand::SweepCommand(CLI::App& app)
   m_command.add_flag("--quiet", sweep.quiet, "no progress lines on stderr");
   m_command.add_flag("!--no-report", sweep.report,
                      "skip the report (reports/make_sweep_report.py or, for a component case, "
-                     "make_component_sweep_report.py; python3 + matplotlib)");
+                     "make_component_sweep_report.py; against a flexible casing "
+                     "make_system_sweep_report.py; python3 + matplotlib)");
   add_component_options(m_command, sweep.load);
 }
 
