@@ -10,8 +10,9 @@
 
 namespace rsi {
 
-ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
-                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi) {
+namespace {
+
+void check_macneal_count(const Partition& p, int psi) {
   const int n = p.n();
   const int nb = p.n_boundary();
   if (psi < 1 || psi > n - nb)
@@ -20,16 +21,25 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
                              "massless), got " +
                              std::to_string(psi),
                          failed_input(FailedInput::mode_count));
-  const auto start = std::chrono::steady_clock::now();
+}
+
+} // namespace
+
+ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                     const FreeInterfacePool& pool, const std::vector<int>& kept,
+                     std::chrono::steady_clock::time_point start) {
+  const int psi = static_cast<int>(kept.size());
+  check_macneal_count(p, psi);
+  const int nb = p.n_boundary();
   ReducedBasis basis;
   basis.method = "macneal";
   basis.n_modes = psi;
   basis.requested_modes = psi;
-  basis.candidate_modes = psi;
-  basis.mode_index.resize(psi);
-  std::iota(basis.mode_index.begin(), basis.mode_index.end(), 0);
+  basis.candidate_modes = pool.count;
+  basis.mode_index = kept;
   ResidualFlexibilityTransformation t =
-      residual_flexibility_transformation(stiffness, mass, p, psi, "MacNeal");
+      residual_flexibility_transformation(p, pool, kept, "MacNeal");
   basis.transformation = std::move(t.transformation);
   basis.cond_rb = t.cond_rb;
   basis.mode_omega = std::move(t.mode_omega);
@@ -40,6 +50,16 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
   basis.mass.bottomRightCorner(psi, psi).setIdentity();
   basis.massless_boundary = true;
   return basis;
+}
+
+ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi) {
+  check_macneal_count(p, psi);
+  const auto start = std::chrono::steady_clock::now();
+  const FreeInterfacePool pool = free_interface_pool(stiffness, mass, p, psi, "MacNeal");
+  std::vector<int> kept(psi);
+  std::iota(kept.begin(), kept.end(), 0);
+  return macneal(stiffness, mass, p, pool, kept, start);
 }
 
 } // namespace rsi

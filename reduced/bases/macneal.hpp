@@ -30,12 +30,26 @@
 // invertible (cond(R_B) reported, >= 1/(n eps) refused), ReductionError
 // otherwise. Valid range: 1 <= psi <= n - n_B (psi = 0 would leave no mass).
 
+#include <chrono>
+#include <vector>
+
 #include <Eigen/SparseCore>
 
+#include "craig_chang_martinez.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
 
 namespace rsi {
+
+/// The basis keeping the pool's modes `kept` (ascending, at least one), as
+/// Craig-Chang-Martinez's overload of that name: several bases from one
+/// pool's Lanczos and K^-1 E_B; `start` is when the work began
+/// (build_seconds). With the pool of psi modes, every one kept, the bases
+/// of the count-based builder below, bit for bit.
+ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                     const FreeInterfacePool& pool, const std::vector<int>& kept,
+                     std::chrono::steady_clock::time_point start);
 
 ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
                      const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi);

@@ -30,9 +30,10 @@
 // ccx (Rotor 37) is absent. ccx's runs are cached (RSI_CCX_CACHE, default
 // build/ccx-cache). CTest runs each component's rows in one process
 // (verification/CMakeLists.txt, rsi_add_test_groups), so the component is
-// loaded and each basis built once: Rotor 37 55 s in Release (447 s as
-// one process per case), the blade's complete CB basis (its own coarser
-// blade) in a process of its own beside them.
+// loaded and each basis built once: Rotor 37 81 s in Release alone (447 s
+// as one process per case; 219 s in session 27's CI before its full modes,
+// CCM and MacNeal shared one free-interface pool), the blade's complete CB
+// basis (its own coarser blade) in a process of its own beside them.
 //
 // Rotor 37's M, as ccx 2.20 writes it for the deck's C3D15 wedges, is
 // singular: Lanczos on (M + c I)^-1 finds 102 eigenvalues within
@@ -53,6 +54,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <string>
 #include <vector>
@@ -63,7 +65,9 @@
 #include "calculix_run.hpp"
 #include "child_process.hpp"
 #include "component_case.hpp"
+#include "craig_chang_martinez.hpp"
 #include "critical_step.hpp"
+#include "macneal.hpp"
 #include "modal_analysis.hpp"
 #include "reduction.hpp"
 #include "reduction_rows.hpp"
@@ -103,6 +107,10 @@ struct Plan {
   std::vector<int> static_modes;    ///< mode counts of the static rows
   std::vector<int> macneal;         ///< psi of the MacNeal rows
   int lowest = 20;                  ///< eigenvalues compared by the Ritz rise
+  /// The full modes, CCM and MacNeal from one free-interface pool of n_full
+  /// modes (free_pool below): for a model past the dense solver's size,
+  /// where the full modes and the pool's are the same Lanczos call.
+  bool shared_free_pool = false;
 };
 
 /// The project's gmsh blade at its coarse default.
@@ -124,15 +132,16 @@ struct Blade3d {
 };
 
 /// NASA Rotor 37, one mode count (20): every lowest_modes call on its
-/// 61,098 dofs costs about 50 s today (Spectra's shift-invert on a sparse
-/// LU), a reduction with modes 70-130 s. Four such calls (the full modes,
-/// CB 20, CCM 20, MacNeal 20): the fixed-interface modes are checked through
-/// CB 20's modal block (CraigBamptonBlockDiagonal: Phi^T M Phi = I,
-/// Phi^T K Phi diagonal) and the free modes are the full ones (CCM and
-/// MacNeal call the same Lanczos, lowest_modes(K, M, psi)).
+/// 61,098 dofs costs about 37 s today (Spectra's shift-invert on a sparse
+/// LU, its Sturm count), a reduction with modes 40 s. Two such calls (the
+/// free modes, CB 20's fixed-interface modes): the fixed-interface modes
+/// are checked through CB 20's modal block (CraigBamptonBlockDiagonal:
+/// Phi^T M Phi = I, Phi^T K Phi diagonal) and the free modes are the full
+/// ones, computed once for the full modes, CCM and MacNeal (free_pool).
 struct Rotor37 {
   static Plan plan() {
-    return {RSI_SOURCE_DIR "/data/cases/rotor37.json", 20, {}, {}, {0, 20}, {0, 20}, {20}, 20};
+    return {
+        RSI_SOURCE_DIR "/data/cases/rotor37.json", 20, {}, {}, {0, 20}, {0, 20}, {20}, 20, true};
   }
   static std::string missing() {
     const std::string deck = RSI_SOURCE_DIR "/../shared/external/rotor37/blade.inp";
@@ -147,8 +156,15 @@ struct Rotor37 {
 /// pairs 0-3 of the first family (test_gmsh_bladed_disk).
 struct BladedDisk3d {
   static Plan plan() {
-    return {
-        RSI_SOURCE_DIR "/data/cases/bladed-disk3d-ci.json", 20, {}, {}, {0, 20}, {0, 20}, {20}, 20};
+    return {RSI_SOURCE_DIR "/data/cases/bladed-disk3d-ci.json",
+            20,
+            {},
+            {},
+            {0, 20},
+            {0, 20},
+            {20},
+            20,
+            true};
   }
   static std::string missing() { return Blade3d::missing(); }
 };
@@ -163,6 +179,8 @@ struct Loaded {
   /// Why the rows that compute modes cannot run (CHOLMOD cannot factor M), or empty.
   std::unique_ptr<Modes> full;
   std::map<std::string, ReducedBasis> bases;
+  bool shared_free_pool = false;
+  std::unique_ptr<FreeInterfacePool> pool;
 };
 
 std::unique_ptr<Loaded> load(const Plan& plan) {
@@ -182,14 +200,34 @@ std::unique_ptr<Loaded> load(const Plan& plan) {
               seconds_since(start), l->c->k_norm(), l->c->m_norm(), l->c->cond_k(),
               seconds_since(start));
   l->n_full = plan.n_full;
+  l->shared_free_pool = plan.shared_free_pool;
   return l;
+}
+
+/// The n_full lowest free-interface modes (Lanczos) and K^-1 E_B, computed
+/// on first use: what the count-based CCM and MacNeal builders compute for
+/// n_full modes (free_interface_pool, then every mode kept), so their
+/// n_full-mode bases from it are those of reduce(), bit for bit; with none
+/// kept it is CCM(0)'s R = K^-1 E_B (eq. 14 with no modes). On Rotor 37
+/// three Lanczos runs of 37 s and two K^-1 E_B became one of each.
+const FreeInterfacePool& free_pool(Loaded& l) {
+  if (l.pool) return *l.pool;
+  const Clock::time_point start = Clock::now();
+  l.pool = std::make_unique<FreeInterfacePool>(free_interface_pool(
+      l.model.stiffness, l.model.mass, l.c->partition(), l.n_full, "free-interface pool"));
+  std::printf("  [free-interface pool: %d modes (%s) and K^-1 E_B in %.2f s, shared by the full "
+              "modes, CCM and MacNeal]\n",
+              l.pool->count, l.pool->complete ? "dense, complete" : "Lanczos",
+              seconds_since(start));
+  return *l.pool;
 }
 
 /// The full modes, computed on first use.
 const Modes& full_modes(Loaded& l) {
   if (l.full) return *l.full;
   const Clock::time_point start = Clock::now();
-  l.full = std::make_unique<Modes>(rows::full_modes(*l.c, l.n_full));
+  l.full = std::make_unique<Modes>(l.shared_free_pool ? free_pool(l).modes
+                                                      : rows::full_modes(*l.c, l.n_full));
   const double omega_max = std::sqrt(l.c->lambda_max());
   std::printf("  [%d full modes (%s) in %.2f s: f1 = %.4f Hz, f%d = %.4f Hz; full omega_max = "
               "%.6e rad/s, critical step 2/omega_max = %.6e s]\n",
@@ -205,11 +243,26 @@ const ReducedBasis& basis(Loaded& l, const std::string& method, int modes) {
   const std::string key = method + "-" + std::to_string(modes);
   const auto found = l.bases.find(key);
   if (found != l.bases.end()) return found->second;
-  ReducedBasis b = reduce(l.model.stiffness, l.model.mass, l.model.boundary, method, modes);
+  const bool from_pool = l.shared_free_pool && modes <= l.n_full &&
+                         (method == "ccm" || (method == "macneal" && modes >= 1));
+  ReducedBasis b;
+  if (from_pool) {
+    const FreeInterfacePool& pool = free_pool(l);
+    std::vector<int> kept(static_cast<size_t>(modes));
+    std::iota(kept.begin(), kept.end(), 0);
+    const Clock::time_point start = Clock::now();
+    b = method == "ccm"
+            ? craig_chang_martinez(l.model.stiffness, l.model.mass, l.c->partition(), pool, kept,
+                                   start)
+            : macneal(l.model.stiffness, l.model.mass, l.c->partition(), pool, kept, start);
+  } else {
+    b = reduce(l.model.stiffness, l.model.mass, l.model.boundary, method, modes);
+  }
   const double omega_max = reduced_omega_max(b);
-  std::printf("  [built %-7s %2d: r = %3d in %.2f s; reduced omega_max %.6e rad/s, critical "
+  std::printf("  [built %-7s %2d: r = %3d in %.2f s%s; reduced omega_max %.6e rad/s, critical "
               "step %.6e s]\n",
-              method.c_str(), modes, b.n_reduced(), b.build_seconds, omega_max, 2.0 / omega_max);
+              method.c_str(), modes, b.n_reduced(), b.build_seconds,
+              from_pool ? " from the pool" : "", omega_max, 2.0 / omega_max);
   return l.bases.emplace(key, std::move(b)).first->second;
 }
 

@@ -19,11 +19,13 @@
 // convention of test_reduction_bases), printed with the measured errors.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -37,6 +39,7 @@
 #include <lapacke.h>
 
 #include "bladed_disk.hpp"
+#include "craig_chang_martinez.hpp"
 #include "critical_step.hpp"
 #include "dense_norms.hpp"
 #include "macneal.hpp"
@@ -210,6 +213,52 @@ TEST_F(MacNeal, TransformationIsCraigChangMartinezAndStiffnessIsTransformedK) {
     EXPECT_EQ(b.cond_rb, ccm.cond_rb);
     EXPECT_LE(ratio, 1.0);
   }
+}
+
+// macneal.hpp and craig_chang_martinez.hpp: one pool for several bases
+// (test_component_rows builds the full modes, CCM(0), CCM(psi) and
+// MacNeal(psi) of a large model from one). The pool of psi modes, every one
+// kept, is what the count-based builder computes: the same bits. Keeping
+// none of a pool of 20 leaves R = K^-1 E_B, the flexibility the count-based
+// CCM(0) computes by the same refined solve (both pools take the Lanczos
+// path here, 4 x 20 < n): the same bits as CCM(0).
+TEST_F(MacNeal, PoolBuildsTheCountBasedBases) {
+  const Model& md = model();
+  const Eigen::SparseMatrix<double>& k = md.bd.stiffness;
+  const Eigen::SparseMatrix<double>& m = md.bd.mass;
+  const int psi = 20;
+  const FreeInterfacePool pool = free_interface_pool(k, m, md.p, psi, "pool");
+  ASSERT_FALSE(pool.complete); // the Lanczos path, as on the 3D models
+  std::vector<int> all(psi);
+  std::iota(all.begin(), all.end(), 0);
+  const auto now = std::chrono::steady_clock::now();
+  const ReducedBasis mcn = macneal(k, m, md.p, pool, all, now);
+  const ReducedBasis ccm = craig_chang_martinez(k, m, md.p, pool, all, now);
+  const ReducedBasis ccm0 = craig_chang_martinez(k, m, md.p, pool, {}, now);
+  const auto max_diff = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return a.rows() == b.rows() && a.cols() == b.cols() ? (a - b).cwiseAbs().maxCoeff()
+                                                        : std::numeric_limits<double>::infinity();
+  };
+  const double d_mcn_t = max_diff(mcn.transformation, basis("macneal", psi).transformation);
+  const double d_mcn_k = max_diff(mcn.stiffness, basis("macneal", psi).stiffness);
+  const double d_mcn_m = max_diff(mcn.mass, basis("macneal", psi).mass);
+  const double d_ccm_t = max_diff(ccm.transformation, basis("ccm", psi).transformation);
+  const double d_ccm_m = max_diff(ccm.mass, basis("ccm", psi).mass);
+  const double d_ccm0_t = max_diff(ccm0.transformation, basis("ccm", 0).transformation);
+  const double d_ccm0_k = max_diff(ccm0.stiffness, basis("ccm", 0).stiffness);
+  std::printf("pool of %d: MacNeal-%d max|dT| %.1e, |dK^| %.1e, |dM^| %.1e; CCM-%d |dT| %.1e, "
+              "|dM^| %.1e; none kept vs CCM(0) |dT| %.1e, |dK^| %.1e (all exact 0)\n",
+              psi, psi, d_mcn_t, d_mcn_k, d_mcn_m, psi, d_ccm_t, d_ccm_m, d_ccm0_t, d_ccm0_k);
+  EXPECT_EQ(d_mcn_t, 0.0);
+  EXPECT_EQ(d_mcn_k, 0.0);
+  EXPECT_EQ(d_mcn_m, 0.0);
+  EXPECT_EQ(d_ccm_t, 0.0);
+  EXPECT_EQ(d_ccm_m, 0.0);
+  EXPECT_EQ(d_ccm0_t, 0.0);
+  EXPECT_EQ(d_ccm0_k, 0.0);
+  EXPECT_EQ(mcn.mode_index, all);
+  EXPECT_TRUE(mcn.massless_boundary);
+  EXPECT_THROW(macneal(k, m, md.p, pool, {}, now), ReductionError); // psi >= 1
 }
 
 // macneal.hpp: the finite eigenvalues of (K^, M^) are the lowest psi full
