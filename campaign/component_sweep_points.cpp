@@ -300,7 +300,7 @@ private:
     const std::optional<NodalDiameterMap> map = system_nodal_diameter_map(m_model);
     if (!map) return {};
     return {{"nodal_diameters.csv", nodal_diameters_csv(*map)},
-            {"interaction_lines.csv", interaction_lines_csv(map->lines)}};
+            {"interaction_lines.csv", system_interaction_lines_csv(map->lines)}};
   }
 
   static std::string row_start(double speed, const ComponentSweepRun& run,

@@ -24,7 +24,7 @@ NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Co
   for (int i = 0; i < c.n_modes(); ++i)
     map.casing.push_back(
         {c.frequency_hz(i), circumferential_harmonic(casing, c.shapes.col(i), 64)});
-  map.lines = interaction_lines(map.disk, sectors, map.casing, families);
+  map.lines = interaction_lines(map.disk, sectors, map.casing, families, true);
   return map;
 }
 
@@ -56,10 +56,14 @@ std::string nodal_diameters_csv(const NodalDiameterMap& map) {
   return csv;
 }
 
-std::string interaction_lines_csv(const std::vector<InteractionLine>& lines) {
-  std::string csv = "family,nodal_diameter,blade_hz,casing_mode,casing_hz,speed_rad_s\n";
+namespace {
+
+std::string lines_csv(const std::vector<InteractionLine>& lines, bool lobes) {
+  std::string csv = std::string("family,nodal_diameter,") + (lobes ? "casing_lobes," : "") +
+                    "blade_hz,casing_mode,casing_hz,speed_rad_s\n";
   for (const InteractionLine& l : lines) {
     csv += std::to_string(l.family) + "," + std::to_string(l.nodal_diameter) + ",";
+    if (lobes) csv += std::to_string(l.casing_lobes) + ",";
     append_csv_number(csv, l.blade_hz);
     csv += "," + std::to_string(l.casing_mode) + ",";
     append_csv_number(csv, l.casing_hz);
@@ -68,6 +72,16 @@ std::string interaction_lines_csv(const std::vector<InteractionLine>& lines) {
     csv += "\n";
   }
   return csv;
+}
+
+} // namespace
+
+std::string interaction_lines_csv(const std::vector<InteractionLine>& lines) {
+  return lines_csv(lines, false);
+}
+
+std::string system_interaction_lines_csv(const std::vector<InteractionLine>& lines) {
+  return lines_csv(lines, true);
 }
 
 } // namespace rsi

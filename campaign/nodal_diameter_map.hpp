@@ -24,7 +24,9 @@ struct NodalDiameterMap {
 };
 
 /// `families` whole families of the disk (families + 1 times N modes, the
-/// last family's pairs whole) and the casing's `casing_modes` lowest.
+/// last family's pairs whole) and the casing's `casing_modes` lowest; the
+/// lines of every casing mode with lobes, those above N/2 through their
+/// alias (interaction_lines.hpp).
 NodalDiameterMap nodal_diameter_map(const Component& disk, int sectors, const Component& casing,
                                     int families, int casing_modes);
 
@@ -42,7 +44,12 @@ std::optional<NodalDiameterMap> system_nodal_diameter_map(const RubbingModel& mo
 std::string nodal_diameters_csv(const NodalDiameterMap& map);
 
 /// family,nodal_diameter,blade_hz,casing_mode,casing_hz,speed_rad_s (17
-/// significant digits): the sweeps' interaction_lines.csv, 2D and 3D.
+/// significant digits): the paper's sweep's interaction_lines.csv (2D).
 std::string interaction_lines_csv(const std::vector<InteractionLine>& lines);
+
+/// family,nodal_diameter,casing_lobes,blade_hz,casing_mode,casing_hz,speed_rad_s:
+/// the 3D system's interaction_lines.csv (rsi campaign, rsi sweep), its
+/// lines above N/2 lobes aliased (nodal_diameter k, casing_lobes n).
+std::string system_interaction_lines_csv(const std::vector<InteractionLine>& lines);
 
 } // namespace rsi

@@ -23,7 +23,6 @@ reading the map: the casing does not force them, but contact, being
 one-sided, makes every harmonic of the response. A resonance is where
 EO Omega / 2 pi = f_k: Omega = 2 pi f_k / EO.
 """
-import csv
 import json
 import math
 import os
@@ -33,6 +32,11 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_files  # noqa: E402
+from report_files import number, save_figure, write_whole  # noqa: E402
 
 SWEEP_COLUMNS = ["speed_rad_s", "run", "method", "modes", "status", "diverged", "rows", "max_tip_radial",
                  "max_contact_force", "contact_fraction", "energy_ratio", "balance_residual",
@@ -44,37 +48,11 @@ NAME = "make_component_sweep_report.py"
 
 
 def die(message):
-    sys.stderr.write(f"{NAME}: error: {message}\n")
-    sys.exit(1)
-
-
-def number(text):
-    return float(text) if text != "" else math.nan
+    report_files.die(NAME, message)
 
 
 def read_csv(path, columns, optional=()):
-    """The rows of `path`, whose columns must be `columns` (then `optional`, if any)."""
-    if not os.path.isfile(path):
-        die(f"{path}: missing")
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        if reader.fieldnames not in (columns, columns + list(optional)):
-            die(f"{path}: columns {reader.fieldnames}, expected {columns}")
-        return list(reader)
-
-
-def write_whole(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
-
-
-def save_figure(fig, path):
-    tmp = path + ".tmp.png"
-    fig.savefig(tmp, dpi=130, bbox_inches="tight")
-    plt.close(fig)
-    os.replace(tmp, path)
+    return report_files.read_csv(NAME, path, columns, optional)
 
 
 def main():

@@ -322,15 +322,20 @@ if flexible:
                   ""]
         if interaction:
             lowest = min(interaction, key=lambda r: float(r["speed_rad_s"]))
-            lines += ["| family | n | f_b [Hz] | casing mode | f_c [Hz] | Omega_int [rad/s] "
-                      "| Omega_int / Omega |", "|---|---|---|---|---|---|---|"]
+            lines += ["| family | disk diameters k | casing lobes n | f_b [Hz] | casing mode "
+                      "| f_c [Hz] | Omega_int [rad/s] | Omega_int / Omega |",
+                      "|---|---|---|---|---|---|---|---|"]
             for r in interaction:
                 w = float(r["speed_rad_s"])
-                lines.append(f"| {r['family']} | {r['nodal_diameter']} | "
+                lines.append(f"| {r['family']} | {r['nodal_diameter']} | {r['casing_lobes']} | "
                              f"{float(r['blade_hz']):.2f} | {r['casing_mode']} | "
                              f"{float(r['casing_hz']):.2f} | {w:.1f} | {w / omega:.2f} |")
-            lines += ["", f"The lowest interaction speed is {float(lowest['speed_rad_s']):.1f} "
-                      f"rad/s (family {lowest['family']}, n = {lowest['nodal_diameter']}), "
+            lines += ["", "A casing mode of n lobes meets the N tips as the disk's k = |n - m N| "
+                      "<= N/2 diameters (k = n up to N/2; above, its alias: "
+                      "sweep/interaction_lines.hpp); Omega_int = 2 pi (f_b(k) + f_c) / n.", "",
+                      f"The lowest interaction speed is {float(lowest['speed_rad_s']):.1f} "
+                      f"rad/s (family {lowest['family']}, k = {lowest['nodal_diameter']}, n = "
+                      f"{lowest['casing_lobes']} lobes), "
                       f"{float(lowest['speed_rad_s']) / omega:.2f} times this case's "
                       f"{omega:g} rad/s."]
         else:

@@ -6,16 +6,16 @@ nodal-diameter map and sweep_report.md.
 
 Usage: make_system_sweep_report.py DIR
 Reads DIR/sweep.csv (a row per speed and run), DIR/interaction_lines.csv
-(family, nodal_diameter, blade_hz, casing_mode, casing_hz, speed_rad_s: the
-speeds Omega_int = 2 pi (f_b + f_c) / n at which a disk family's backward
-wave of n nodal diameters and a casing mode's forward wave of n lobes travel
-together, Legrand et al. 2009), DIR/nodal_diameters.csv and
+(family, nodal_diameter k, casing_lobes n, blade_hz, casing_mode, casing_hz,
+speed_rad_s: the speeds Omega_int = 2 pi (f_b + f_c) / n at which a disk
+family's wave of k nodal diameters and a casing mode's forward wave of n
+lobes meet at the tips, Legrand et al. 2009; k = n up to N/2, above it the
+alias of n that N tips see, sweep/interaction_lines.hpp), DIR/nodal_diameters.csv and
 DIR/sweep_summary.json; writes DIR/sweep_map.png, DIR/nodal_diameter_map.png
 and DIR/sweep_report.md, each whole (a temporary file, then a rename). Every
 number in the text is read from those files. Missing or malformed input:
 `make_system_sweep_report.py: error: ...` on stderr, exit status 1.
 """
-import csv
 import json
 import math
 import os
@@ -28,41 +28,25 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 sys.dont_write_bytecode = True  # no __pycache__ beside the scripts
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report_files  # noqa: E402
+from report_files import number, save_figure, write_whole  # noqa: E402
 from nodal_diameter_figure import draw_nodal_diameter_map  # noqa: E402
 
 SWEEP_COLUMNS = ["speed_rad_s", "run", "method", "modes", "status", "diverged", "rows",
                  "max_abs_response", "max_contact_force", "contact_fraction", "energy_ratio",
                  "balance_residual", "f1_hz", "a1", "f2_hz", "a2", "f3_hz", "a3"]
-LINE_COLUMNS = ["family", "nodal_diameter", "blade_hz", "casing_mode", "casing_hz", "speed_rad_s"]
+LINE_COLUMNS = ["family", "nodal_diameter", "casing_lobes", "blade_hz", "casing_mode", "casing_hz",
+                "speed_rad_s"]
 MAP_COLUMNS = ["part", "index", "frequency_hz", "nodal_diameter"]
 NAME = "make_system_sweep_report.py"
 
 
 def die(message):
-    sys.stderr.write(f"{NAME}: error: {message}\n")
-    sys.exit(1)
+    report_files.die(NAME, message)
 
 
-def number(text):
-    return float(text) if text != "" else math.nan
-
-
-def read_csv(path, columns):
-    """The rows of `path`, whose columns must be `columns`."""
-    if not os.path.isfile(path):
-        die(f"{path}: missing")
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        if reader.fieldnames != columns:
-            die(f"{path}: columns {reader.fieldnames}, expected {columns}")
-        return list(reader)
-
-
-def write_whole(path, text):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
+def read_csv(path, columns, optional=()):
+    return report_files.read_csv(NAME, path, columns, optional)
 
 
 def main():
@@ -94,43 +78,47 @@ def main():
                if r["run"] == run and r["status"] != "failed"]
         return [p[0] for p in pts], [p[1] for p in pts]
 
-    # The interaction speeds in the swept range, one per (family, n): the
+    # The interaction speeds in the swept range, one per (family, k, n): the
     # casing's pairs of lobes give two lines a few rad/s apart.
     shown = {}
     for l in lines:
         w = number(l["speed_rad_s"])
-        key = (int(l["family"]), int(l["nodal_diameter"]))
+        key = (int(l["family"]), int(l["nodal_diameter"]), int(l["casing_lobes"]))
         if lo <= w <= hi and (key not in shown or w < shown[key]):
             shown[key] = w
+
+    def line_name(key):
+        family, k, n = key
+        return f"family {family}, k = {k}" + (f" (n = {n} lobes)" if n != k else "")
 
     draw_nodal_diameter_map(nd_rows, os.path.join(out, "nodal_diameter_map.png"))
 
     response = summary.get("response", "the response dof")
-    panels = [("max_abs_response", f"max |{response}| [{length_unit}]"),
-              ("energy_ratio", "E(last) / E(first after the transient)"),
-              ("contact_fraction", "contact fraction (rows with a closed contact)"),
-              ("max_contact_force", f"max normal contact force [{force_unit}]")]
+    # Growth spans decades (a diverged run's energy ratio reaches 1e6):
+    # logarithmic axes but for the contact fraction.
+    panels = [("max_abs_response", f"max |{response}| [{length_unit}]", True),
+              ("energy_ratio", "E(last) / E(first after the transient)", True),
+              ("contact_fraction", "contact fraction (rows with a closed contact)", False),
+              ("max_contact_force", f"max normal contact force [{force_unit}]", True)]
     fig, axes = plt.subplots(len(panels), 1, figsize=(10, 2.6 * len(panels)), sharex=True)
-    for ax, (key, label) in zip(axes, panels):
+    for ax, (key, label, log) in zip(axes, panels):
         for run in runs:
             x, y = series(run, key)
             ax.plot(x, y, ".-", ms=3, lw=0.8, label=run)
-        for (family, n), w in shown.items():
-            ax.axvline(w, color=f"C{2 + family}", ls="-" if family == 1 else "--", lw=0.8)
+        for (family, k, n), w in shown.items():
+            ax.axvline(w, color=f"C{2 + family}", ls="-" if n == k else ":", lw=0.8)
         ax.set_ylabel(label, fontsize=8)
+        if log:
+            ax.set_yscale("log")
         ax.grid(alpha=0.3)
     ymax = axes[0].get_ylim()[1]
-    for (family, n), w in shown.items():
-        axes[0].text(w, ymax, f"family {family}, n = {n}", rotation=90, va="top", ha="right",
-                     fontsize=6)
-    axes[0].legend(fontsize=8, loc="upper left")
+    for key, w in shown.items():
+        axes[0].text(w, ymax, line_name(key), rotation=90, va="top", ha="right", fontsize=6)
+    axes[0].legend(fontsize=8, loc="upper right")
     axes[-1].set_xlabel("rotation speed |Omega| [rad/s]")
-    fig.suptitle("Sweep against the interaction lines Omega_int = 2 pi (f_b + f_c) / n "
-                 "(solid: disk family 1, dashed: family 2)", fontsize=9)
-    tmp = os.path.join(out, "sweep_map.png.tmp.png")
-    fig.savefig(tmp, dpi=130, bbox_inches="tight")
-    plt.close(fig)
-    os.replace(tmp, os.path.join(out, "sweep_map.png"))
+    fig.suptitle("Sweep against the interaction lines Omega_int = 2 pi (f_b + f_c) / n (red: "
+                 "disk family 1, purple: family 2; dotted: n > N/2 lobes, aliased to k)", fontsize=9)
+    save_figure(fig, os.path.join(out, "sweep_map.png"))
 
     md = ["# Rotation-speed sweep of a bladed disk against its flexible casing", "",
           f"Generated by reports/{NAME} from `sweep.csv`, `interaction_lines.csv`, "
@@ -160,9 +148,10 @@ def main():
                   f"{count['completed']} | {count['diverged']} | {count['failed']} |")
     md += ["", "## Against the interaction lines", "", "![sweep map](sweep_map.png)", ""]
     if shown:
-        md += ["| family | n | Omega_int [rad/s] |", "|---|---|---|"]
-        md += [f"| {family} | {n} | {w:.1f} |" for (family, n), w in sorted(shown.items(),
-                                                                            key=lambda i: i[1])]
+        md += ["| family | disk diameters k | casing lobes n | Omega_int [rad/s] |",
+               "|---|---|---|---|"]
+        md += [f"| {family} | {k} | {n} | {w:.1f} |"
+               for (family, k, n), w in sorted(shown.items(), key=lambda i: i[1])]
         md.append("")
     else:
         md += ["No interaction line falls in the swept range.", ""]
@@ -176,8 +165,8 @@ def main():
             i = max(finite, key=lambda j: y[j])
             near = ""
             if shown:
-                (family, n), w = min(shown.items(), key=lambda item: abs(item[1] - x[i]))
-                near = (f"; the nearest interaction line is family {family}, n = {n} at "
+                key, w = min(shown.items(), key=lambda item: abs(item[1] - x[i]))
+                near = (f"; the nearest interaction line is {line_name(key)} at "
                         f"{w:.1f} rad/s ({100 * (x[i] - w) / w:+.1f} %)")
             md.append(f"- {run}: the {what}, {y[i]:.4g}, is at {x[i]:g} rad/s{near}.")
     md += ["", "## Nodal-diameter map", "", "![nodal-diameter map](nodal_diameter_map.png)", ""]

@@ -15,10 +15,15 @@ double interaction_speed(double blade_hz, double casing_hz, int nodal_diameter) 
   return 2.0 * M_PI * (blade_hz + casing_hz) / nodal_diameter;
 }
 
+int aliased_nodal_diameter(int lobes, int n_blades) {
+  const int r = lobes % n_blades;
+  return std::min(r, n_blades - r);
+}
+
 std::vector<InteractionLine> interaction_lines(const std::vector<ClassifiedMode>& disk,
                                                int n_blades,
                                                const std::vector<ClassifiedMode>& casing,
-                                               int families) {
+                                               int families, bool aliased) {
   std::map<int, std::vector<double>> disk_hz; // n -> distinct frequencies, ascending
   for (const ClassifiedMode& mode : disk) {
     std::vector<double>& hz = disk_hz[mode.nodal_diameter];
@@ -27,16 +32,21 @@ std::vector<InteractionLine> interaction_lines(const std::vector<ClassifiedMode>
     // a relative 1e-6 separates pairs from distinct families.
     if (hz.empty() || std::abs(f - hz.back()) > 1e-6 * f) hz.push_back(f);
   }
+  int top = n_blades / 2;
+  if (aliased)
+    for (const ClassifiedMode& mode : casing)
+      top = std::max(top, mode.nodal_diameter);
   std::vector<InteractionLine> lines;
   for (int j = 1; j <= families; ++j)
-    for (int n = 1; 2 * n <= n_blades; ++n) {
-      const auto blade = disk_hz.find(n);
+    for (int n = 1; n <= top; ++n) {
+      const int k = aliased_nodal_diameter(n, n_blades);
+      const auto blade = disk_hz.find(k);
       if (blade == disk_hz.end() || static_cast<int>(blade->second.size()) < j) continue;
       const double fb = blade->second[static_cast<size_t>(j - 1)];
       for (size_t m = 0; m < casing.size(); ++m) {
         if (casing[m].nodal_diameter != n) continue;
         const double fc = casing[m].frequency_hz;
-        lines.push_back({j, n, fb, static_cast<int>(m) + 1, fc, interaction_speed(fb, fc, n)});
+        lines.push_back({j, k, fb, static_cast<int>(m) + 1, fc, interaction_speed(fb, fc, n), n});
       }
     }
   return lines;

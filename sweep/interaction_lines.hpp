@@ -13,9 +13,17 @@
 //
 // Lobes: the casing's nodal diameter is the dominant circumferential
 // harmonic of its mode over the nodes (nodal_diameter.hpp, one block a
-// node); the clamp splits each pair, so two casing modes share an n. Only
-// n = 1 .. N/2 are listed: a casing harmonic above N/2 meets the N blades as
-// its alias N - n, which the blades' own families already cover.
+// node); the clamp splits each pair, so two casing modes share an n. The
+// paper's 2D map lists n = 1 .. N/2 only. With `aliased` (the 3D system's
+// map) a casing mode of n > N/2 lobes is listed too: the N tips sample its
+// wave cos(n theta - omega_c t) at theta_j = 2 pi j / N + Omega t as
+// cos(2 pi n j / N + (n Omega - omega_c) t), a pattern of the disk's nodal
+// diameter k = |n - m N| <= N/2 (m the nearest integer to n / N): the
+// blades' wave of k diameters that matches it (backward for n = k + m N,
+// forward for n = m N - k, the same pattern at the tips) meets it when
+// n Omega - omega_c = omega_b(k), at Omega_int = (omega_b(k) + omega_c) / n.
+// Few blades make this matter: the 6-sector CI disk's casing has its lowest
+// modes at 4 to 8 lobes, all above N/2 = 3 (reports/sweep-system3d-ci).
 
 #include <vector>
 
@@ -24,13 +32,18 @@
 namespace rsi {
 
 struct InteractionLine {
-  int family = 0;         ///< blade mode family j: the j-th distinct frequency at nodal diameter n
-  int nodal_diameter = 0; ///< n >= 1
+  int family = 0;         ///< blade mode family j: the j-th distinct frequency at nodal diameter k
+  int nodal_diameter = 0; ///< k, the disk's (= n but for an aliased line)
   double blade_hz = 0.0;  ///< omega_b / 2 pi, rotating frame
   int casing_mode = 0;    ///< index of the casing mode (1 = lowest)
   double casing_hz = 0.0; ///< omega_c / 2 pi, fixed frame
   double speed_rad_s = 0.0; ///< Omega_int = (omega_b + omega_c) / n
+  int casing_lobes = 0;     ///< n >= 1, the casing's
 };
+
+/// k = |n - m N| <= N/2, m the nearest integer to n / N: the nodal diameter
+/// of the pattern an n-lobed wave makes at N equally spaced tips.
+int aliased_nodal_diameter(int lobes, int n_blades);
 
 /// Omega_int = 2 pi (blade_hz + casing_hz) / n [rad/s].
 double interaction_speed(double blade_hz, double casing_hz, int nodal_diameter);
@@ -43,11 +56,13 @@ struct ClassifiedMode {
 
 /// The lines of the disk's modes (ascending, N = n_blades sectors, at least
 /// `families` whole families) against the casing's (ascending; casing_mode
-/// counts from 1 in this list), ordered by family, n, casing mode.
+/// counts from 1 in this list), ordered by family, n, casing mode; n = 1 ..
+/// N/2, or with `aliased` every n >= 1 of the casing's modes whose alias k
+/// has the family.
 std::vector<InteractionLine> interaction_lines(const std::vector<ClassifiedMode>& disk,
                                                int n_blades,
                                                const std::vector<ClassifiedMode>& casing,
-                                               int families);
+                                               int families, bool aliased = false);
 
 /// Every (blade family j <= families, casing mode among the lowest
 /// casing_modes) pair of equal nodal diameter n in 1 .. N/2, ordered by

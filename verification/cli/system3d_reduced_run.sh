@@ -25,7 +25,10 @@
 #     0.0118 (CB), 0.0118 (MacNeal) when written;
 #  3. nodal_diameters.csv: the disk's first family has the diameters of a
 #     6-fold disk (0, 1, 1, 2, 2, 3); interaction_lines.csv: each speed
-#     2 pi (f_b + f_c) / n of its modes' rows, family 1 at n = 1, 2, 3;
+#     2 pi (f_b + f_c) / n of its modes' rows, n the casing mode's lobes
+#     and f_b the disk's at k = n mod 6 folded to 0 .. 3 (the pattern 6
+#     tips see), a line of family 1 for every lobe count of the casing's
+#     modes but 0;
 #  4. --casing-modes takes the place of rubbing.casing.modes (refused
 #     naming --casing-modes at 100000, before any basis is built), is
 #     refused for a rigid casing (exit 2); rubbing.casing.modes at the
@@ -123,8 +126,9 @@ if not sanitized:
     # The nodal-diameter map: the disk's first family holds the diameters of
     # ccx's cyclic symmetry of a 6-fold disk, 0 once, 1 and 2 twice, 3 once
     # (test_gmsh_bladed_disk); each line's speed is 2 pi (f_b + f_c) / n of
-    # its row (csv's 17 digits: 1e-15), f_b the first frequency of the disk
-    # at n, f_c the casing mode's of n lobes.
+    # its row (csv's 17 digits: 1e-15), f_c the casing mode's of n lobes,
+    # f_b the first frequency of the disk at k, the n-lobed pattern at the
+    # 6 tips: k = n mod 6, folded (k and 6 - k are one pattern).
     with open(f"{d}/nodal_diameters.csv") as f:
         modes = list(csv.DictReader(f))
     disk = [(float(r["frequency_hz"]), int(r["nodal_diameter"])) for r in modes
@@ -138,21 +142,28 @@ if not sanitized:
         lines = list(csv.DictReader(f))
     wrong = 0
     for l in lines:
-        n, fb, fc = int(l["nodal_diameter"]), float(l["blade_hz"]), float(l["casing_hz"])
+        k, n = int(l["nodal_diameter"]), int(l["casing_lobes"])
+        fb, fc = float(l["blade_hz"]), float(l["casing_hz"])
         w = float(l["speed_rad_s"])
+        if k != min(n % 6, 6 - n % 6):
+            wrong += 1
         if abs(w - 2 * math.pi * (fb + fc) / n) > 1e-15 * w * 4:
             wrong += 1
-        if l["family"] == "1" and fb != min(f for f, m in disk if m == n):
+        if l["family"] == "1" and fb != min(f for f, m in disk if m == k):
             wrong += 1
         if casing[int(l["casing_mode"]) - 1] != (fc, n):
             wrong += 1
-    ns = sorted({int(l["nodal_diameter"]) for l in lines if l["family"] == "1"})
-    if wrong or ns != [1, 2, 3]:
-        bad.append(f"interaction lines: {wrong} rows off their modes, family 1 at n = {ns}")
+    ns = sorted({int(l["casing_lobes"]) for l in lines if l["family"] == "1"})
+    lobes = sorted({m for _, m in casing if m > 0})
+    if wrong or ns != lobes:
+        bad.append(f"interaction lines: {wrong} rows off their modes, family 1 at n = {ns}, "
+                   f"the casing's lobes {lobes}")
     else:
         low = min(lines, key=lambda l: float(l["speed_rad_s"]))
         print(f"ok   nodal diameters: first family {first}; {len(lines)} interaction lines, "
-              f"the lowest {float(low['speed_rad_s']):.1f} rad/s (n = {low['nodal_diameter']})")
+              f"family 1 at n = {ns[0]} .. {ns[-1]} lobes, the lowest "
+              f"{float(low['speed_rad_s']):.1f} rad/s (k = {low['nodal_diameter']}, n = "
+              f"{low['casing_lobes']})")
 for b in bad:
     print("FAIL", b)
 sys.exit(1 if bad else 0)

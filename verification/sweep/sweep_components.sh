@@ -163,60 +163,12 @@ PY
 "$rsi" simulate "$work/oval.json" --method macneal --modes 10 --ccx-cache "$cache" \
   --out "$work/single_oval" >"$work/log7" 2>&1 || { fail "simulate (oval) exited $?"; cat "$work/log7"; }
 # CSV ROW_RUN HISTORY SUMMARY G0 (g0 of a constant gap; "oval": the tip
-# displacement is not recomputed, its g0 needing the nodes' angles)
+# displacement is not recomputed, its g0 needing the nodes' angles): the
+# row at 1200 rad/s (1000 samples a revolution, every one, 0.25 revolution
+# of transient) recomputed by sweep_row_from_history.py.
 check_row() {
-/usr/bin/python3 - "$@" <<'PY'
-import csv, json, math, sys
-import numpy as np
-row = [r for r in csv.DictReader(open(sys.argv[1]))
-       if r["speed_rad_s"] == "1200" and r["run"] == sys.argv[2]][0]
-hist = list(csv.DictReader(open(sys.argv[3])))
-summary = json.load(open(sys.argv[4]))
-speed, n, every, transient_revs = 1200.0, 1000, 1, 0.25
-g0 = None if sys.argv[5] == "oval" else float(sys.argv[5])
-period = 2.0 * math.pi / abs(speed)
-interval = period / n * every
-transient = transient_revs * period
-kept = [h for h in hist if float(h["t"]) >= transient - 1e-6 * interval]
-nc = sum(1 for k in hist[0] if k.startswith("gap_"))
-gaps = [[float(h[f"gap_{c}"]) for c in range(1, nc + 1)] for h in kept]
-lams = [[float(h[f"lambda_{c}"]) for c in range(1, nc + 1)] for h in kept]
-# u_r = g0 - g (g = g0 + e_n . u, e_n inward); exact in floating point as rsi's.
-mine = {
-    "rows": len(kept),
-    "max_contact_force": max(max(r) for r in lams),
-    "contact_fraction": sum(1 for r in lams if max(r) > 0.0) / len(kept),
-    "energy_ratio": float(kept[-1]["energy"]) / float(kept[0]["energy"]),
-    "balance_residual": summary["energy_balance_error"] / summary["energy_scale"],
-}
-if g0 is not None:
-    mine["max_tip_radial"] = max(abs(g0 - g) for r in gaps for g in r)
-bad = 0
-for key, value in mine.items():
-    theirs = float(row[key])
-    print(f"{key}: sweep.csv {theirs!r}, from history.csv {value!r}")
-    # The same doubles through the same operations: equal to the last bit.
-    if theirs != value:
-        bad += 1
-# The spectrum (response_spectrum.hpp): Hann (periodic), mean removed, padded 8x,
-# A = 2|X|/sum(w), local maxima largest first. numpy's FFT against GSL's: round-off
-# of order n log n eps ~ 1e-12 relative; 1e-9 on amplitudes, frequencies on the
-# same padded bin (exact: k / (8 n dt)).
-x = np.array([float(h["u_11_2"]) for h in kept])
-m = len(x)
-w = 0.5 * (1.0 - np.cos(2.0 * np.pi * np.arange(m) / m))
-a = 2.0 * np.abs(np.fft.rfft(w * (x - x.mean()), 8 * m)) / w.sum()
-peaks = [k for k in range(1, len(a) - 1) if a[k] > a[k - 1] and a[k] >= a[k + 1]]
-peaks.sort(key=lambda k: (-a[k], k))
-for i, k in enumerate(peaks[:3], 1):
-    f, amp = k / (8 * m * interval), a[k]
-    tf, ta = float(row[f"f{i}_hz"]), float(row[f"a{i}"])
-    err = abs(ta - amp) / amp
-    print(f"peak {i}: sweep.csv {tf} Hz {ta}, numpy {f} Hz {amp} (relative {err:.1e})")
-    if abs(tf - f) > 1e-9 * f or err > 1e-9:
-        bad += 1
-sys.exit(1 if bad else 0)
-PY
+  /usr/bin/python3 "$(dirname "$0")/sweep_row_from_history.py" "$1" 1200 "$2" "$3" "$4" 1000 1 0.25 \
+    u_11_2 "$5"
 }
 check_row "$work/inter/sweep.csv" macneal-10 "$work/single/history.csv" "$work/single/summary.json" -0.02 ||
   fail "indicators recomputed from history.csv differ from sweep.csv's row (constant interference)"

@@ -206,5 +206,50 @@ TEST(InteractionLines, RingTheoryAndTheCalibratedFamily) {
   EXPECT_GE(checked, 10);
 }
 
+// interaction_lines.hpp, aliased lines: 6 blades, a casing mode of n lobes
+// meets the disk's k = |n - 6m| diameters. At the tips theta_j = 2 pi j / 6
+// + Omega t the casing wave cos(n theta - omega_c t) is
+// cos(2 pi n j / 6 + (n Omega - omega_c) t): the pattern cos(2 pi k j / 6)
+// or its mirror (exact: n j and +-k j differ by a multiple of 6 j), and the
+// blades' family frequency is n Omega_int / 2 pi - f_c (to 1e-12: the
+// speed's rounding). Without `aliased` only n <= N/2 = 3.
+TEST(InteractionLines, AliasedLobesMeetTheirDiameterAtTheTips) {
+  std::vector<ClassifiedMode> disk;
+  for (int k = 0; k <= 3; ++k) // one family, pairs but at 0 and N/2
+    for (int copy = 0; copy < (k == 0 || k == 3 ? 1 : 2); ++copy)
+      disk.push_back({290.0 + k, k});
+  for (int k = 0; k <= 3; ++k)
+    for (int copy = 0; copy < (k == 0 || k == 3 ? 1 : 2); ++copy)
+      disk.push_back({1400.0 + k, k});
+  std::sort(disk.begin(), disk.end(),
+            [](const ClassifiedMode& a, const ClassifiedMode& b) { return a.frequency_hz < b.frequency_hz; });
+  const std::vector<ClassifiedMode> casing{{2482.0, 6}, {2496.0, 7}, {2538.0, 5}, {2657.0, 4},
+                                           {2801.0, 3}, {2990.0, 2}, {3146.0, 1}, {3241.0, 0},
+                                           {3400.0, 9}, {3500.0, 12}};
+  const std::vector<InteractionLine> plain = interaction_lines(disk, 6, casing, 1);
+  const std::vector<InteractionLine> all = interaction_lines(disk, 6, casing, 1, true);
+  ASSERT_EQ(plain.size(), 3u); // n = 1, 2, 3
+  for (const InteractionLine& l : plain)
+    EXPECT_EQ(l.casing_lobes, l.nodal_diameter);
+  ASSERT_EQ(all.size(), 9u); // n = 1 .. 7, 9, 12 (n = 0 never)
+  int previous = 0;
+  for (const InteractionLine& l : all) {
+    const int n = l.casing_lobes, k = l.nodal_diameter;
+    EXPECT_GT(n, previous); // ordered by lobes
+    previous = n;
+    EXPECT_EQ(k, aliased_nodal_diameter(n, 6));
+    for (int j = 0; j < 6; ++j) // the pattern at the tips: k's, exactly (integer phases)
+      EXPECT_TRUE((n * j - k * j) % 6 == 0 || (n * j + k * j) % 6 == 0) << "n " << n << " j " << j;
+    EXPECT_EQ(l.blade_hz, 290.0 + k);
+    EXPECT_NEAR(n * l.speed_rad_s / (2.0 * M_PI) - l.casing_hz, l.blade_hz, 1e-12 * l.casing_hz);
+  }
+  EXPECT_EQ(all[3].casing_lobes, 4);
+  EXPECT_EQ(all[3].nodal_diameter, 2);
+  EXPECT_EQ(all[5].casing_lobes, 6);
+  EXPECT_EQ(all[5].nodal_diameter, 0);
+  EXPECT_EQ(all[8].casing_lobes, 12);
+  EXPECT_EQ(all[8].nodal_diameter, 0);
+}
+
 } // namespace
 } // namespace rsi

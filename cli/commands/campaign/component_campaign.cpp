@@ -99,7 +99,7 @@ void write_nodal_diameter_map(const RubbingModel& model, const std::string& stag
   const std::optional<NodalDiameterMap> map = system_nodal_diameter_map(model);
   if (!map) return;
   write_text_file(stage + "/nodal_diameters.csv", nodal_diameters_csv(*map));
-  write_text_file(stage + "/interaction_lines.csv", interaction_lines_csv(map->lines));
+  write_text_file(stage + "/interaction_lines.csv", system_interaction_lines_csv(map->lines));
   output.announce("wrote " + out + "/nodal_diameters.csv and " + out +
                   "/interaction_lines.csv (" + std::to_string(map->lines.size()) +
                   " interaction lines)\n");
