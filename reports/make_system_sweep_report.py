@@ -54,8 +54,10 @@ def main():
         die("usage: make_system_sweep_report.py DIR")
     out = sys.argv[1]
     rows = read_csv(os.path.join(out, "sweep.csv"), SWEEP_COLUMNS)
-    lines = read_csv(os.path.join(out, "interaction_lines.csv"), LINE_COLUMNS)
-    nd_rows = read_csv(os.path.join(out, "nodal_diameters.csv"), MAP_COLUMNS)
+    # A rotor that is not a bladed disk (one blade in the ring) has no map.
+    has_map = os.path.exists(os.path.join(out, "nodal_diameters.csv"))
+    lines = read_csv(os.path.join(out, "interaction_lines.csv"), LINE_COLUMNS) if has_map else []
+    nd_rows = read_csv(os.path.join(out, "nodal_diameters.csv"), MAP_COLUMNS) if has_map else []
     summary_path = os.path.join(out, "sweep_summary.json")
     try:
         summary = json.load(open(summary_path))
@@ -91,7 +93,8 @@ def main():
         family, k, n = key
         return f"family {family}, k = {k}" + (f" (n = {n} lobes)" if n != k else "")
 
-    draw_nodal_diameter_map(nd_rows, os.path.join(out, "nodal_diameter_map.png"))
+    if has_map:
+        draw_nodal_diameter_map(nd_rows, os.path.join(out, "nodal_diameter_map.png"))
 
     response = summary.get("response", "the response dof")
     # Growth spans decades (a diverged run's energy ratio reaches 1e6):
@@ -153,7 +156,7 @@ def main():
         md += [f"| {family} | {k} | {n} | {w:.1f} |"
                for (family, k, n), w in sorted(shown.items(), key=lambda i: i[1])]
         md.append("")
-    else:
+    elif has_map:
         md += ["No interaction line falls in the swept range.", ""]
     for run in runs:
         for key, what in (("max_abs_response", f"largest |{response}|"),
@@ -169,7 +172,10 @@ def main():
                 near = (f"; the nearest interaction line is {line_name(key)} at "
                         f"{w:.1f} rad/s ({100 * (x[i] - w) / w:+.1f} %)")
             md.append(f"- {run}: the {what}, {y[i]:.4g}, is at {x[i]:g} rad/s{near}.")
-    md += ["", "## Nodal-diameter map", "", "![nodal-diameter map](nodal_diameter_map.png)", ""]
+    md += ["", "## Nodal-diameter map", ""]
+    md += (["![nodal-diameter map](nodal_diameter_map.png)", ""] if has_map else
+           ["None: the rotor is not a bladed disk (no nodal diameters, no interaction "
+            "lines).", ""])
     failures = summary.get("failures", [])
     if failures:
         md += ["## Failed runs", ""] + [f"- {f}" for f in failures] + [""]
