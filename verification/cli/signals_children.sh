@@ -13,7 +13,7 @@
 #  - ccx writing Rotor 37's matrices (data/cases/rotor37.json, 61,098
 #    dofs) on a cold cache. Before: rsi waited for ccx to finish.
 #  - `modes --count 400` on Rotor 37 (the block shift-invert method on a
-#    CHOLMOD factor; 200 modes took 7.5 min wall, 66 s of CPU, on the
+#    CHOLMOD factor, one BLAS thread: below; 200 modes took 7.5 min wall, 66 s of CPU, on the
 #    loaded 2-core machine), signalled 8 s after it started, while loading,
 #    factorising or iterating. Before: the eigensolve ran to its end,
 #    printed "wrote .../modes.csv" and exited 143 with the file not there.
@@ -159,7 +159,13 @@ interrupt ccx 20000 child:ccx "$work/cold-ccx" "$rsi" modes "$work/rotor37.json"
 # The eigensolve: Rotor 37's matrices in the shared cache first (not timed).
 "$rsi" modes "$work/rotor37.json" --count 1 --ccx-cache "$cache" --out "$work/warm" >/dev/null 2>&1 ||
   fail "warming the ccx cache: rsi modes rotor37 --count 1 failed"
-interrupt eigensolve 60000 sleep:8 "$cache" "$rsi" modes "$work/rotor37.json" --count 400
+# One BLAS thread: in session 28's rehearsal (sanitizer suite, beside
+# another test) rsi still ran 120 s after the signal inside one OpenBLAS
+# dgemm of the block method's orthonormalisation, the caller in exec_blas
+# and OpenBLAS's worker both in sched_yield: a stall of the library's
+# thread pool on an oversubscribed machine, inside one call that rsi cannot
+# poll. What this test checks is rsi's polling between its calls.
+interrupt eigensolve 60000 sleep:8 "$cache" env OPENBLAS_NUM_THREADS=1 "$rsi" modes "$work/rotor37.json" --count 400
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)"
   exit 1
