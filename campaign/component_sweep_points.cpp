@@ -49,8 +49,8 @@ struct PreparedRun {
   ComponentSweepRun run;
   std::optional<ReducedBasis> basis; ///< reduced methods
   /// Reduced methods against the flexible casing: its modes and static
-  /// correction, the same at every speed.
-  std::optional<CasingBasis> casing;
+  /// correction, one basis for every speed and every reduced run.
+  std::shared_ptr<const CasingBasis> casing;
   /// Reduced methods with rotation effects: the subspace each speed's basis is reduced in.
   std::shared_ptr<const SpeedSubspace> subspace;
   double basis_seconds = 0.0;
@@ -166,7 +166,7 @@ public:
     options.revolutions_key = "sweep.revolutions";
     options.rotation_speed = speed;
     options.basis = r.basis ? &*r.basis : nullptr;
-    options.casing_basis = r.casing ? &*r.casing : nullptr;
+    options.casing_basis = r.casing.get();
     std::optional<ReducedBasis> at_speed;
     options.checkpoint = throw_if_interrupted;
     SweepTaskResult out;
@@ -455,6 +455,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
   if (model.component_case().rotation_effects && !rotation)
     throw std::logic_error("component_sweep_points: rotation effects need the rotation fit");
   std::vector<PreparedRun> runs(sweep.runs.size());
+  std::shared_ptr<const CasingBasis> casing; // built by the first reduced run that needs it
   for (size_t j = 0; j < runs.size(); ++j) {
     PreparedRun& r = runs[j];
     r.run = sweep.runs[j];
@@ -476,7 +477,9 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
     } else if (r.run.method != "full") {
       const Clock::time_point t = Clock::now();
       // The casing's count checked before the rotor's basis (as run_rubbing).
-      if (model.setup().casing) r.casing = rubbing_casing_basis(model, 0);
+      if (model.setup().casing && !casing)
+        casing = std::make_shared<const CasingBasis>(rubbing_casing_basis(model, 0));
+      r.casing = casing;
       try {
         r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
                          r.run.method, r.run.modes);
