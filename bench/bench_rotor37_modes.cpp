@@ -2,6 +2,7 @@
 // (CalculiX model, 61,098 dofs, K with 7.1 M nonzeros), and their parts:
 //  - CHOLMOD's analysis and factorization of K, supernodal and simplicial;
 //  - CHOLMOD's factorization of M (what lowest_modes pays for omega_max);
+//  - the Sturm count of lowest_modes' check, by UMFPACK and by CHOLMOD's simplicial L D L^T;
 //  - Spectra's shift-invert Lanczos on Eigen's SparseLU (the sparse path before this round) and on
 //    the CHOLMOD factor (CholmodShiftInvert), for several ncv;
 //  - the block Krylov-Schur method (block_shift_invert), for several block sizes and bases;
@@ -47,6 +48,7 @@
 #include "cholmod_factor.hpp"
 #include "cholmod_shift_invert.hpp"
 #include "modal_analysis.hpp"
+#include "symmetric_inertia.hpp"
 
 namespace {
 
@@ -182,6 +184,35 @@ void cholmod_factor_m(benchmark::State& state) {
   state.counters["peak_MB"] = peak_megabytes();
 }
 BENCHMARK(cholmod_factor_m)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime();
+
+/// The Sturm count of lowest_modes' check: the inertia of K - tau M, tau =
+/// (2 pi 18,800 Hz)^2 just above the 50th mode (18,713 Hz), by
+/// sparse_inertia (argument 0: UMFPACK's multifrontal LU) and by
+/// simplicial_inertia (1: CHOLMOD's simplicial L D L^T, the only count
+/// until session 29). Counter "below": the count (50 expected).
+void sturm_count(benchmark::State& state) {
+  const Rotor37* r = model_or_skip(state);
+  if (!r) return;
+  const double tau = std::pow(2.0 * M_PI * 18800.0, 2);
+  SpMat lower = lower_triangle(r->k) - tau * lower_triangle(r->m);
+  lower.makeCompressed();
+  for (auto _ : state) {
+    const rsi::Inertia inertia =
+        state.range(0) == 0 ? rsi::sparse_inertia(lower) : rsi::simplicial_inertia(lower);
+    if (!inertia.factorized) state.SkipWithError((inertia.method + ": " + inertia.why).c_str());
+    state.counters["below"] = inertia.negative;
+    state.SetLabel(inertia.method);
+  }
+  state.counters["peak_MB"] = peak_megabytes();
+}
+BENCHMARK(sturm_count)
+    ->ArgName("simplicial")
+    ->Arg(0)
+    ->Arg(1)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->MeasureProcessCPUTime()

@@ -30,6 +30,13 @@ inline cholmod_sparse cholmod_lower_view(const Eigen::SparseMatrix<double>& lowe
   return a;
 }
 
+/// The lock every analysis that may order by METIS holds (CHOLMOD's below,
+/// UMFPACK's in symmetric_inertia.cpp): METIS's one generator (see below).
+inline std::mutex& metis_generator_lock() {
+  static std::mutex lock;
+  return lock;
+}
+
 /// cholmod_analyze(a, common), never two at once in the process. CHOLMOD's
 /// default analysis tries METIS besides AMD when AMD's fill is large (3D
 /// solids) and keeps the better ordering; METIS 5 draws from one random
@@ -43,8 +50,7 @@ inline cholmod_sparse cholmod_lower_view(const Eigen::SparseMatrix<double>& lowe
 /// (test_cholmod_factor.ConcurrentAnalysesAreTheSerialOne). The lock is
 /// process-wide because the generator is.
 inline cholmod_factor* cholmod_analyze_serialized(cholmod_sparse* a, cholmod_common* common) {
-  static std::mutex metis_generator;
-  const std::lock_guard<std::mutex> one_at_a_time(metis_generator);
+  const std::lock_guard<std::mutex> one_at_a_time(metis_generator_lock());
   return cholmod_analyze(a, common);
 }
 

@@ -1,12 +1,15 @@
 #include "symmetric_inertia.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include <cholmod.h>
 #include <lapacke.h>
+#include <umfpack.h>
 
 #include "cholmod_handles.hpp"
 
@@ -23,12 +26,116 @@ void count(double d, Inertia& inertia) {
     ++inertia.zero;
 }
 
+/// UMFPACK's Symbolic and Numeric objects, freed on every path.
+struct UmfpackObjects {
+  void* symbolic = nullptr;
+  void* numeric = nullptr;
+  UmfpackObjects() = default;
+  UmfpackObjects(const UmfpackObjects&) = delete;
+  UmfpackObjects& operator=(const UmfpackObjects&) = delete;
+  ~UmfpackObjects() {
+    if (numeric != nullptr) umfpack_di_free_numeric(&numeric);
+    if (symbolic != nullptr) umfpack_di_free_symbolic(&symbolic);
+  }
+};
+
+void throw_if_out_of_memory(int status) {
+  if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
+}
+
+/// The count from UMFPACK's multifrontal LU of the whole symmetric matrix B,
+/// symmetric strategy, no scaling: when every pivot was a diagonal entry
+/// (the row order P equal to the column order Q), P B P^T = L U is the LU of
+/// a symmetric matrix without pivoting, U = D L^T with D of its L D L^T, and
+/// the signs of diag(U) are B's inertia. nullopt when UMFPACK pivoted off
+/// the diagonal (a zero diagonal entry met): no count from it.
+std::optional<Inertia> multifrontal_inertia(const Eigen::SparseMatrix<double>& lower) {
+  Eigen::SparseMatrix<double> whole = lower.selfadjointView<Eigen::Lower>();
+  whole.makeCompressed();
+  const int n = static_cast<int>(whole.rows());
+  double control[UMFPACK_CONTROL];
+  double info[UMFPACK_INFO];
+  umfpack_di_defaults(control);
+  control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_SYMMETRIC;
+  control[UMFPACK_SCALE] = UMFPACK_SCALE_NONE;
+  control[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+  // Threshold 0: every nonzero diagonal entry is taken as it comes, as
+  // CHOLMOD's L D L^T without pivoting does (a zero one, with nonzeros left
+  // in its column, is not: UMFPACK pivots off the diagonal there).
+  control[UMFPACK_SYM_PIVOT_TOLERANCE] = 0.0;
+  UmfpackObjects u;
+  Inertia inertia;
+  inertia.method = "UMFPACK LU, diagonal pivots";
+  // UMFPACK orders by METIS as CHOLMOD does: the same process-wide lock
+  // (cholmod_handles.hpp), or two analyses at once draw each other's numbers.
+  int status = 0;
+  {
+    const std::lock_guard<std::mutex> one_at_a_time(metis_generator_lock());
+    status = umfpack_di_symbolic(n, n, whole.outerIndexPtr(), whole.innerIndexPtr(),
+                                 whole.valuePtr(), &u.symbolic, control, info);
+  }
+  throw_if_out_of_memory(status);
+  if (status != UMFPACK_OK) {
+    inertia.why = "UMFPACK's symbolic analysis failed (status " + std::to_string(status) + ")";
+    return inertia;
+  }
+  status = umfpack_di_numeric(whole.outerIndexPtr(), whole.innerIndexPtr(), whole.valuePtr(),
+                              u.symbolic, &u.numeric, control, info);
+  throw_if_out_of_memory(status);
+  if (status == UMFPACK_WARNING_singular_matrix) {
+    inertia.why = "LU pivot exactly zero (UMFPACK)";
+    return inertia;
+  }
+  if (status != UMFPACK_OK) {
+    inertia.why = "UMFPACK's factorization failed (status " + std::to_string(status) + ")";
+    return inertia;
+  }
+  if (info[UMFPACK_NOFF_DIAG] != 0.0) return std::nullopt;
+  std::vector<int> rows(static_cast<size_t>(n)), columns(static_cast<size_t>(n));
+  std::vector<double> diagonal(static_cast<size_t>(n));
+  int reciprocal = 0;
+  status = umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, rows.data(),
+                                  columns.data(), diagonal.data(), &reciprocal, nullptr, u.numeric);
+  throw_if_out_of_memory(status);
+  if (status != UMFPACK_OK) {
+    inertia.why = "UMFPACK's factor could not be read (status " + std::to_string(status) + ")";
+    return inertia;
+  }
+  if (rows != columns) return std::nullopt;
+  for (int j = 0; j < n; ++j) {
+    const double d = diagonal[static_cast<size_t>(j)];
+    if (!std::isfinite(d) || d == 0.0) {
+      inertia = Inertia{};
+      inertia.method = "UMFPACK LU, diagonal pivots";
+      inertia.why = "LU pivot " + std::to_string(d) + " at step " + std::to_string(j);
+      return inertia;
+    }
+    count(d, inertia);
+  }
+  inertia.factorized = true;
+  return inertia;
+}
+
 } // namespace
 
 Inertia sparse_inertia(const Eigen::SparseMatrix<double>& lower) {
   if (lower.rows() != lower.cols() || !lower.isCompressed())
     throw std::invalid_argument("sparse_inertia: the lower triangle must be square and compressed");
+  if (lower.rows() == 0) {
+    Inertia inertia;
+    inertia.factorized = true;
+    return inertia;
+  }
+  if (std::optional<Inertia> multifrontal = multifrontal_inertia(lower)) return *multifrontal;
+  return simplicial_inertia(lower);
+}
+
+Inertia simplicial_inertia(const Eigen::SparseMatrix<double>& lower) {
+  if (lower.rows() != lower.cols() || !lower.isCompressed())
+    throw std::invalid_argument(
+        "simplicial_inertia: the lower triangle must be square and compressed");
   Inertia inertia;
+  inertia.method = "CHOLMOD simplicial L D L^T";
   if (lower.rows() == 0) {
     inertia.factorized = true;
     return inertia;
@@ -61,6 +168,7 @@ Inertia sparse_inertia(const Eigen::SparseMatrix<double>& lower) {
     const double d = x[p[j]]; // D_jj: the first entry of column j
     if (!std::isfinite(d) || d == 0.0) {
       inertia = Inertia{};
+      inertia.method = "CHOLMOD simplicial L D L^T";
       inertia.why = "L D L^T pivot " + std::to_string(d) + " at column " + std::to_string(j);
       return inertia;
     }
@@ -74,6 +182,7 @@ Inertia dense_inertia(const Eigen::Ref<const Eigen::MatrixXd>& a) {
   if (a.rows() != a.cols()) throw std::invalid_argument("dense_inertia: the matrix must be square");
   const int n = static_cast<int>(a.rows());
   Inertia inertia;
+  inertia.method = "LAPACK dsytrf";
   if (n == 0) {
     inertia.factorized = true;
     return inertia;

@@ -41,8 +41,9 @@
 //    of lambda_top (a multiple eigenvalue that the count cuts): then
 //    K - (lambda_top - w) M must have exactly as many negative pivots as
 //    modes returned below lambda_top - w.
-// Dense inertia (LAPACKE_dsytrf) up to dense_check_limit dofs, CHOLMOD's
-// simplicial L D L^T above.
+// Dense inertia (LAPACKE_dsytrf) up to dense_check_limit dofs, above it
+// UMFPACK's LU with diagonal pivots, or CHOLMOD's simplicial L D L^T when
+// UMFPACK pivoted off the diagonal (linalg/symmetric_inertia.hpp).
 //
 // Uncertainty of each eigenvalue (absolute, u_i = a_i + b_i):
 //  - a_i, the rounding of the input: entries of K and M rounded to eps_in

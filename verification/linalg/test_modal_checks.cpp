@@ -415,7 +415,7 @@ TEST(ModalChecks, SturmCountCatchesASkippedMode) {
 
 TEST(ModalChecks, InertiaCountsTheClosedFormEigenvalues) {
   // Sylvester: negative pivots of K - tau M = eigenvalues below tau (the
-  // closed form), by CHOLMOD's L D L^T and by LAPACK's Bunch-Kaufman.
+  // closed form), by UMFPACK's LU, CHOLMOD's L D L^T and LAPACK's Bunch-Kaufman.
   const Cube c = laplacian_cube(10, false);
   const std::vector<double> exact = cube_eigenvalues(c.kappa);
   const Eigen::MatrixXd kd = Eigen::MatrixXd(c.k);
@@ -432,15 +432,61 @@ TEST(ModalChecks, InertiaCountsTheClosedFormEigenvalues) {
                   tau * SpMat(c.m.triangularView<Eigen::Lower>());
     lower.makeCompressed();
     const Inertia sparse = sparse_inertia(lower);
+    const Inertia simplicial = simplicial_inertia(lower);
     const Inertia dense = dense_inertia(kd - tau * md);
-    std::printf("tau %.6e: %d eigenvalues below (closed form), CHOLMOD %d negative, LAPACK %d\n",
-                tau, expected, sparse.negative, dense.negative);
+    std::printf("tau %.6e: %d eigenvalues below (closed form), %s %d negative, %s %d, %s %d\n",
+                tau, expected, sparse.method.c_str(), sparse.negative, simplicial.method.c_str(),
+                simplicial.negative, dense.method.c_str(), dense.negative);
     ASSERT_TRUE(sparse.factorized) << sparse.why;
+    ASSERT_TRUE(simplicial.factorized) << simplicial.why;
     ASSERT_TRUE(dense.factorized) << dense.why;
+    EXPECT_EQ(sparse.method, "UMFPACK LU, diagonal pivots");
     EXPECT_EQ(sparse.negative, expected);
+    EXPECT_EQ(simplicial.negative, expected);
     EXPECT_EQ(dense.negative, expected);
     EXPECT_EQ(sparse.negative + sparse.positive, static_cast<int>(exact.size()));
   }
+}
+
+TEST(ModalChecks, InertiaOfTinyAndZeroPivots) {
+  // Blocks [d 1; 1 d] (eigenvalues d - 1 < 0 < d + 1) between diagonal
+  // entries 1..n_spd: with d = 1e-6 UMFPACK keeps to the diagonal (its
+  // threshold is 0, as an L D L^T without pivoting: pivots d > 0 and
+  // d - 1/d < 0 a block) and counts one negative eigenvalue a block. With
+  // d = 0 it must pivot off the diagonal, its U says nothing of the
+  // inertia, and CHOLMOD's L D L^T meets a zero pivot first: no count, and
+  // the failure says which factorization made it (the caller moves tau).
+  const int n_blocks = 40, n_spd = 30;
+  const int n = 2 * n_blocks + n_spd;
+  auto blocks = [&](double d) {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int b = 0; b < n_blocks; ++b) {
+      entries.emplace_back(2 * b, 2 * b, d);
+      entries.emplace_back(2 * b + 1, 2 * b, 1.0);
+      entries.emplace_back(2 * b + 1, 2 * b + 1, d);
+    }
+    for (int k = 0; k < n_spd; ++k)
+      entries.emplace_back(2 * n_blocks + k, 2 * n_blocks + k, 1.0 + k);
+    SpMat lower(n, n);
+    lower.setFromTriplets(entries.begin(), entries.end());
+    lower.makeCompressed();
+    return lower;
+  };
+  const SpMat tiny = blocks(1e-6);
+  const Inertia sparse = sparse_inertia(tiny);
+  const Inertia dense = dense_inertia(Eigen::MatrixXd(SpMat(tiny.selfadjointView<Eigen::Lower>())));
+  std::printf("d = 1e-6: %s %d negative, %s %d\n", sparse.method.c_str(), sparse.negative,
+              dense.method.c_str(), dense.negative);
+  ASSERT_TRUE(sparse.factorized) << sparse.why;
+  EXPECT_EQ(sparse.method, "UMFPACK LU, diagonal pivots");
+  EXPECT_EQ(sparse.negative, n_blocks);
+  EXPECT_EQ(sparse.positive, n_blocks + n_spd);
+  EXPECT_EQ(dense.negative, n_blocks);
+  const Inertia zero = sparse_inertia(blocks(0.0));
+  std::printf("d = 0: %s: %s\n", zero.method.c_str(), zero.why.c_str());
+  EXPECT_FALSE(zero.factorized);
+  EXPECT_EQ(zero.method, "CHOLMOD simplicial L D L^T");
+  EXPECT_NE(zero.why.find("pivot"), std::string::npos);
 }
 
 TEST(ModalChecks, TiedC3d10AndC3d20DeckMatchesCalculix) {
