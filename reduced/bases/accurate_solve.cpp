@@ -12,30 +12,6 @@ namespace rsi {
 
 namespace {
 
-/// A sum kept as hi + lo, with every rounding error of the additions and
-/// products gathered in lo (Ogita, Rump, Oishi 2005, Algorithm 5.3 "Dot2").
-class CompensatedSum {
-public:
-  /// TwoSum (Knuth): hi + a = s + e exactly.
-  void add(double a) {
-    const double s = m_hi + a;
-    const double z = s - m_hi;
-    m_lo += (m_hi - (s - z)) + (a - z);
-    m_hi = s;
-  }
-  /// TwoProduct through fma: x y = p + e exactly.
-  void add_product(double x, double y) {
-    const double p = x * y;
-    m_lo += std::fma(x, y, -p);
-    add(p);
-  }
-  double value() const { return m_hi + m_lo; }
-
-private:
-  double m_hi = 0.0;
-  double m_lo = 0.0;
-};
-
 /// Largest |change| / |column| over the columns: the step's size in units of
 /// each column's magnitude.
 double relative_step(const Eigen::MatrixXd& step, const Eigen::MatrixXd& x) {
@@ -53,68 +29,95 @@ double relative_step(const Eigen::MatrixXd& step, const Eigen::MatrixXd& x) {
 namespace {
 
 using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+using DenseRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-/// Columns c0, c0 + 4, ... below `last` of the compensated residual, in
-/// groups of `lanes`: the sums of one row for several columns are independent
-/// chains the processor overlaps (each column's own sum adds the same terms in
-/// the same order as one column at a time, so the result is the same to the
-/// bit). Cloned for processors with FMA (GCC target_clones: chosen at load
-/// time), where std::fma is one instruction instead of a call into libm; fma
-/// is exact either way, so both clones give the same bits.
-__attribute__((target_clones("fma", "default"))) void
+// A sum kept as hi + lo, with every rounding error of the additions and
+// products gathered in lo (Ogita, Rump, Oishi 2005, Algorithm 5.3 "Dot2").
+
+/// hi + a = s + e exactly (TwoSum, Knuth): hi <- s, lo += e.
+inline void two_sum_into(double& hi, double& lo, double a) {
+  const double s = hi + a;
+  const double z = s - hi;
+  lo += (hi - (s - z)) + (a - z);
+  hi = s;
+}
+
+/// x y = p + e exactly (TwoProduct through fma): lo += e, then p added.
+inline void two_product_into(double& hi, double& lo, double x, double y) {
+  const double p = x * y;
+  lo += std::fma(x, y, -p);
+  two_sum_into(hi, lo, p);
+}
+
+constexpr Eigen::Index lanes = 8;
+
+/// The compensated residual of the columns of groups first_group ..
+/// last_group - 1, `lanes` columns a group: the sums of one row for the
+/// columns of a group are independent chains, each adding the same terms in
+/// the same order as one column summed alone (so the same bits), which the
+/// compiler runs side by side in one vector register; x is read
+/// by rows (`xt`), the group's entries of a row contiguous. Cloned for x86-64
+/// levels v4 (AVX-512) and v3 (AVX2, FMA) besides the default (GCC
+/// target_clones, chosen at load time); fma is exact and each lane's
+/// operations are IEEE operations in every clone, so all give the same bits
+/// (verification/reduced/test_accurate_solve.cpp checks them against a
+/// plain scalar Dot2).
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
 residual_columns(const RowMajor& rows, const Eigen::MatrixXd& low_product, const AccurateMatrix& b,
-                 const Eigen::MatrixXd& x, Eigen::Index first_group, Eigen::Index last_group,
+                 const DenseRows& xt, Eigen::Index first_group, Eigen::Index last_group,
                  Eigen::MatrixXd& r) {
-  constexpr Eigen::Index lanes = 4;
   const bool has_a_low = low_product.size() > 0;
   const bool has_b_low = b.low.size() > 0;
-  const Eigen::Index n_cols = x.cols();
+  const Eigen::Index n_cols = xt.cols();
   for (Eigen::Index group = first_group; group < last_group; ++group) {
     const Eigen::Index c0 = group * lanes;
     const Eigen::Index width = std::min(lanes, n_cols - c0);
     for (Eigen::Index i = 0; i < rows.rows(); ++i) {
-      CompensatedSum sum[lanes];
+      double hi[lanes] = {};
+      double lo[lanes] = {};
       for (Eigen::Index k = 0; k < width; ++k) {
-        sum[k].add(b.value(i, c0 + k));
-        if (has_b_low) sum[k].add(b.low(i, c0 + k));
-        if (has_a_low) sum[k].add(-low_product(i, c0 + k));
+        two_sum_into(hi[k], lo[k], b.value(i, c0 + k));
+        if (has_b_low) two_sum_into(hi[k], lo[k], b.low(i, c0 + k));
+        if (has_a_low) two_sum_into(hi[k], lo[k], -low_product(i, c0 + k));
       }
       if (width == lanes) {
         for (RowMajor::InnerIterator it(rows, i); it; ++it) {
           const double v = -it.value();
-          const double* xr = &x(it.col(), c0);
-          const Eigen::Index stride = x.outerStride();
-          sum[0].add_product(v, xr[0]);
-          sum[1].add_product(v, xr[stride]);
-          sum[2].add_product(v, xr[2 * stride]);
-          sum[3].add_product(v, xr[3 * stride]);
+          const double* xr = xt.data() + it.col() * n_cols + c0;
+          for (Eigen::Index k = 0; k < lanes; ++k)
+            two_product_into(hi[k], lo[k], v, xr[k]);
         }
       } else {
-        for (RowMajor::InnerIterator it(rows, i); it; ++it)
+        for (RowMajor::InnerIterator it(rows, i); it; ++it) {
+          const double v = -it.value();
+          const double* xr = xt.data() + it.col() * n_cols + c0;
           for (Eigen::Index k = 0; k < width; ++k)
-            sum[k].add_product(-it.value(), x(it.col(), c0 + k));
+            two_product_into(hi[k], lo[k], v, xr[k]);
+        }
       }
       for (Eigen::Index k = 0; k < width; ++k)
-        r(i, c0 + k) = sum[k].value();
+        r(i, c0 + k) = hi[k] + lo[k];
     }
   }
 }
 
-/// compensated_residual with A already in rows; the groups of four columns
-/// split between two threads when the work is worth one (each column is
-/// summed by one thread: the split does not change a bit).
+/// compensated_residual with A already in rows; the groups of columns split
+/// between two threads when the work is worth one (each column is summed by
+/// one thread: the split does not change a bit).
 Eigen::MatrixXd residual(const RowMajor& rows, const Eigen::MatrixXd& a_low,
                          const AccurateMatrix& b, const Eigen::MatrixXd& x) {
-  const Eigen::MatrixXd low_product = a_low.size() > 0 ? Eigen::MatrixXd(a_low * x) : Eigen::MatrixXd();
+  const Eigen::MatrixXd low_product =
+      a_low.size() > 0 ? Eigen::MatrixXd(a_low * x) : Eigen::MatrixXd();
+  const DenseRows xt = x;
   Eigen::MatrixXd r(b.value.rows(), b.value.cols());
-  const Eigen::Index groups = (x.cols() + 3) / 4;
+  const Eigen::Index groups = (x.cols() + lanes - 1) / lanes;
   const double work = static_cast<double>(rows.nonZeros()) * static_cast<double>(x.cols());
   if (groups < 2 || work < 1e7 || std::thread::hardware_concurrency() < 2) {
-    residual_columns(rows, low_product, b, x, 0, groups, r);
+    residual_columns(rows, low_product, b, xt, 0, groups, r);
   } else {
     const Eigen::Index middle = groups / 2;
-    std::thread second([&] { residual_columns(rows, low_product, b, x, middle, groups, r); });
-    residual_columns(rows, low_product, b, x, 0, middle, r);
+    std::thread second([&] { residual_columns(rows, low_product, b, xt, middle, groups, r); });
+    residual_columns(rows, low_product, b, xt, 0, middle, r);
     second.join();
   }
   return r;

@@ -31,6 +31,76 @@ TEST(AccurateSolve, ResidualKeepsWhatWorkingPrecisionLoses) {
   EXPECT_EQ(compensated, -1.0);
 }
 
+/// Dot2 (Ogita, Rump, Oishi 2005, Algorithm 5.3) one entry at a time, as
+/// written there: b + b_low - a_low x, then - a_ij x_j for the row's entries
+/// in column order, TwoSum and TwoProduct (fma) errors gathered in one sum.
+double dot2_entry(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a,
+                  const Eigen::MatrixXd& low_product, const AccurateMatrix& b,
+                  const Eigen::MatrixXd& x, Eigen::Index i, Eigen::Index j) {
+  double s = 0.0, c = 0.0;
+  auto two_sum = [&](double t) {
+    const double sum = s + t;
+    const double z = sum - s;
+    c += (s - (sum - z)) + (t - z);
+    s = sum;
+  };
+  two_sum(b.value(i, j));
+  if (b.low.size() > 0) two_sum(b.low(i, j));
+  if (low_product.size() > 0) two_sum(-low_product(i, j));
+  for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, i); it; ++it) {
+    const double p = -it.value() * x(it.col(), j);
+    c += std::fma(-it.value(), x(it.col(), j), -p);
+    two_sum(p);
+  }
+  return s + c;
+}
+
+TEST(AccurateSolve, ResidualIsDot2EntryByEntry) {
+  // The library's residual sums columns side by side (vector registers, two
+  // threads when nnz(A) columns >= 1e7): every entry must be the bits of
+  // Dot2 summed alone. 21 columns: two groups of eight and a partial one;
+  // 20,000 rows of about 30 entries: 1.2e7, the threaded path.
+  const Eigen::Index n = 20000, columns = 21;
+  std::mt19937_64 random(29);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::uniform_int_distribution<Eigen::Index> column_of(0, n - 1);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (int k = 0; k < 30; ++k)
+      entries.emplace_back(i, column_of(random), std::ldexp(uniform(random), k % 40));
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  auto random_matrix = [&](double scale) {
+    Eigen::MatrixXd m(n, columns);
+    for (Eigen::Index k = 0; k < m.size(); ++k)
+      m.data()[k] = scale * uniform(random);
+    return m;
+  };
+  const Eigen::MatrixXd x = random_matrix(1e3);
+  const AccurateMatrix b{random_matrix(1e10), random_matrix(1e-7)};
+  const Eigen::MatrixXd r = compensated_residual(a, Eigen::MatrixXd(), b, x);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows = a;
+  long differing = 0;
+  for (Eigen::Index j = 0; j < columns; ++j)
+    for (Eigen::Index i = 0; i < n; ++i)
+      differing += r(i, j) != dot2_entry(rows, Eigen::MatrixXd(), b, x, i, j);
+  std::printf("%ld x %ld residual, %ld nonzeros: %ld entries differ from Dot2 alone\n",
+              static_cast<long>(n), static_cast<long>(columns), static_cast<long>(a.nonZeros()),
+              differing);
+  EXPECT_EQ(differing, 0);
+  // Without b's low part and with a dense a_low (its product subtracted first).
+  const Eigen::MatrixXd small_low = Eigen::MatrixXd::Constant(3, 3, 1e-17);
+  const Eigen::SparseMatrix<double> a3 = Eigen::MatrixXd::Constant(3, 3, 1.0 / 3.0).sparseView();
+  const Eigen::MatrixXd x3 = Eigen::MatrixXd::Constant(3, 11, 3.0);
+  const AccurateMatrix b3{Eigen::MatrixXd::Constant(3, 11, 3.0), {}};
+  const Eigen::MatrixXd r3 = compensated_residual(a3, small_low, b3, x3);
+  const Eigen::MatrixXd low3 = small_low * x3;
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> rows3 = a3;
+  for (Eigen::Index j = 0; j < 11; ++j)
+    for (Eigen::Index i = 0; i < 3; ++i)
+      EXPECT_EQ(r3(i, j), dot2_entry(rows3, low3, b3, x3, i, j));
+}
+
 TEST(AccurateSolve, RefinementReturnsTheExactSolutionOfAnIntegerSystem) {
   // Clamped 1D bending stencil [1 -4 6 -4 1] (a beam's K up to a factor):
   // cond grows as n^4, about 1e9 at n = 400. With integer x*, b = A x* is
