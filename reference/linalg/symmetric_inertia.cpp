@@ -26,6 +26,27 @@ void count(double d, Inertia& inertia) {
     ++inertia.zero;
 }
 
+/// The inertia of the pivots of an L D L^T (or of U = D L^T), counted by
+/// `method`. A zero (or NaN) pivot makes no count: tau is an eigenvalue to
+/// working precision.
+Inertia pivot_signs(const std::vector<double>& pivots, const std::string& method,
+                    const std::string& pivot) {
+  Inertia inertia;
+  inertia.method = method;
+  for (size_t j = 0; j < pivots.size(); ++j) {
+    const double d = pivots[j];
+    if (!std::isfinite(d) || d == 0.0) {
+      inertia = Inertia{};
+      inertia.method = method;
+      inertia.why = pivot + " " + std::to_string(d) + " at step " + std::to_string(j);
+      return inertia;
+    }
+    count(d, inertia);
+  }
+  inertia.factorized = true;
+  return inertia;
+}
+
 /// UMFPACK's Symbolic and Numeric objects, freed on every path.
 struct UmfpackObjects {
   void* symbolic = nullptr;
@@ -102,18 +123,7 @@ std::optional<Inertia> multifrontal_inertia(const Eigen::SparseMatrix<double>& l
     return inertia;
   }
   if (rows != columns) return std::nullopt;
-  for (int j = 0; j < n; ++j) {
-    const double d = diagonal[static_cast<size_t>(j)];
-    if (!std::isfinite(d) || d == 0.0) {
-      inertia = Inertia{};
-      inertia.method = "UMFPACK LU, diagonal pivots";
-      inertia.why = "LU pivot " + std::to_string(d) + " at step " + std::to_string(j);
-      return inertia;
-    }
-    count(d, inertia);
-  }
-  inertia.factorized = true;
-  return inertia;
+  return pivot_signs(diagonal, inertia.method, "LU pivot");
 }
 
 } // namespace
@@ -163,19 +173,10 @@ Inertia simplicial_inertia(const Eigen::SparseMatrix<double>& lower) {
   // factorization goes on past it; CHOLMOD reports only a zero one).
   const auto* p = static_cast<const int*>(f.p);
   const auto* x = static_cast<const double*>(f.x);
-  const auto n = static_cast<Eigen::Index>(f.n);
-  for (Eigen::Index j = 0; j < n; ++j) {
-    const double d = x[p[j]]; // D_jj: the first entry of column j
-    if (!std::isfinite(d) || d == 0.0) {
-      inertia = Inertia{};
-      inertia.method = "CHOLMOD simplicial L D L^T";
-      inertia.why = "L D L^T pivot " + std::to_string(d) + " at column " + std::to_string(j);
-      return inertia;
-    }
-    count(d, inertia);
-  }
-  inertia.factorized = true;
-  return inertia;
+  std::vector<double> pivots(f.n);
+  for (size_t j = 0; j < f.n; ++j)
+    pivots[j] = x[p[j]]; // D_jj: the first entry of column j
+  return pivot_signs(pivots, inertia.method, "L D L^T pivot");
 }
 
 Inertia dense_inertia(const Eigen::Ref<const Eigen::MatrixXd>& a) {
