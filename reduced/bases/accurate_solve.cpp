@@ -32,7 +32,11 @@ using RowMajor = Eigen::SparseMatrix<double, Eigen::RowMajor>;
 using DenseRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // A sum kept as hi + lo, with every rounding error of the additions and
-// products gathered in lo (Ogita, Rump, Oishi 2005, Algorithm 5.3 "Dot2").
+// products gathered in lo in the order they arise (after Ogita, Rump, Oishi
+// 2005, Algorithm 5.3 "Dot2", which adds each pair of errors first; the
+// error bound is that of summing the same terms in any order). Compiled
+// with -ffp-contract=off (reduced/CMakeLists.txt): a product fused into a
+// following addition would lose the error TwoProduct recovers.
 
 /// hi + a = s + e exactly (TwoSum, Knuth): hi <- s, lo += e.
 inline void two_sum_into(double& hi, double& lo, double a) {
@@ -60,8 +64,8 @@ constexpr Eigen::Index lanes = 8;
 /// levels v4 (AVX-512) and v3 (AVX2, FMA) besides the default (GCC
 /// target_clones, chosen at load time); fma is exact and each lane's
 /// operations are IEEE operations in every clone, so all give the same bits
-/// (verification/reduced/test_accurate_solve.cpp checks them against a
-/// plain scalar Dot2).
+/// (verification/reduced/test_accurate_solve.cpp checks the clone the
+/// processor runs against the same sums one entry at a time).
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"))) void
 residual_columns(const RowMajor& rows, const Eigen::MatrixXd& low_product, const AccurateMatrix& b,
                  const DenseRows& xt, Eigen::Index first_group, Eigen::Index last_group,

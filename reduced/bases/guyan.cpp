@@ -2,12 +2,14 @@
 
 #include <chrono>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <sstream>
 #include <string>
 
 #include <Eigen/CholmodSupport>
 
+#include "cholmod_handles.hpp"
 #include "energy_resolution.hpp"
 #include "transpose_product.hpp"
 
@@ -22,8 +24,12 @@ namespace {
 class CheckedCholmod : public Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>> {
 public:
   explicit CheckedCholmod(const Eigen::SparseMatrix<double>& a) {
-    // Eigen's compute(a), with the analysis checked before the factorization.
-    analyzePattern(a);
+    // Eigen's compute(a), with the analysis checked before the factorization;
+    // METIS's lock held through the analysis (linalg/cholmod_handles.hpp).
+    {
+      const std::lock_guard<std::mutex> one_at_a_time(metis_generator_lock());
+      analyzePattern(a);
+    }
     throw_if_out_of_memory();
     if (m_cholmodFactor == nullptr) return; // defect() says so
     factorize(a);

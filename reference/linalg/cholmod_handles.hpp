@@ -30,8 +30,9 @@ inline cholmod_sparse cholmod_lower_view(const Eigen::SparseMatrix<double>& lowe
   return a;
 }
 
-/// The lock every analysis that may order by METIS holds (CHOLMOD's below,
-/// UMFPACK's in symmetric_inertia.cpp): METIS's one generator (see below).
+/// The lock rsi's analyses that may order by METIS hold (CHOLMOD's below
+/// and in reduced/bases/guyan.cpp, UMFPACK's in symmetric_inertia.cpp):
+/// METIS's one generator (see below).
 inline std::mutex& metis_generator_lock() {
   static std::mutex lock;
   return lock;

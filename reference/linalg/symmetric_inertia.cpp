@@ -60,16 +60,14 @@ struct UmfpackObjects {
   }
 };
 
-void throw_if_out_of_memory(int status) {
-  if (status == UMFPACK_ERROR_out_of_memory) throw std::bad_alloc();
-}
-
 /// The count from UMFPACK's multifrontal LU of the whole symmetric matrix B,
 /// symmetric strategy, no scaling: when every pivot was a diagonal entry
 /// (the row order P equal to the column order Q), P B P^T = L U is the LU of
 /// a symmetric matrix without pivoting, U = D L^T with D of its L D L^T, and
-/// the signs of diag(U) are B's inertia. nullopt when UMFPACK pivoted off
-/// the diagonal (a zero diagonal entry met): no count from it.
+/// the signs of diag(U) are B's inertia (P = Q is the test: UMFPACK counts in
+/// NOFF_DIAG only some off-diagonal pivots). nullopt when UMFPACK pivoted off
+/// the diagonal (a zero diagonal entry met) or failed (out of memory, its int
+/// indices too small for a large LU, METIS): no count from it.
 std::optional<Inertia> multifrontal_inertia(const Eigen::SparseMatrix<double>& lower) {
   Eigen::SparseMatrix<double> whole = lower.selfadjointView<Eigen::Lower>();
   whole.makeCompressed();
@@ -95,33 +93,20 @@ std::optional<Inertia> multifrontal_inertia(const Eigen::SparseMatrix<double>& l
     status = umfpack_di_symbolic(n, n, whole.outerIndexPtr(), whole.innerIndexPtr(),
                                  whole.valuePtr(), &u.symbolic, control, info);
   }
-  throw_if_out_of_memory(status);
-  if (status != UMFPACK_OK) {
-    inertia.why = "UMFPACK's symbolic analysis failed (status " + std::to_string(status) + ")";
-    return inertia;
-  }
+  if (status != UMFPACK_OK) return std::nullopt;
   status = umfpack_di_numeric(whole.outerIndexPtr(), whole.innerIndexPtr(), whole.valuePtr(),
                               u.symbolic, &u.numeric, control, info);
-  throw_if_out_of_memory(status);
   if (status == UMFPACK_WARNING_singular_matrix) {
     inertia.why = "LU pivot exactly zero (UMFPACK)";
     return inertia;
   }
-  if (status != UMFPACK_OK) {
-    inertia.why = "UMFPACK's factorization failed (status " + std::to_string(status) + ")";
-    return inertia;
-  }
-  if (info[UMFPACK_NOFF_DIAG] != 0.0) return std::nullopt;
+  if (status != UMFPACK_OK || info[UMFPACK_NOFF_DIAG] != 0.0) return std::nullopt;
   std::vector<int> rows(static_cast<size_t>(n)), columns(static_cast<size_t>(n));
   std::vector<double> diagonal(static_cast<size_t>(n));
   int reciprocal = 0;
   status = umfpack_di_get_numeric(nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, rows.data(),
                                   columns.data(), diagonal.data(), &reciprocal, nullptr, u.numeric);
-  throw_if_out_of_memory(status);
-  if (status != UMFPACK_OK) {
-    inertia.why = "UMFPACK's factor could not be read (status " + std::to_string(status) + ")";
-    return inertia;
-  }
+  if (status != UMFPACK_OK) return std::nullopt;
   if (rows != columns) return std::nullopt;
   return pivot_signs(diagonal, inertia.method, "LU pivot");
 }

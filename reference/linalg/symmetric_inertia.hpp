@@ -17,8 +17,9 @@
 // diag(U) are the inertia; its diagonal threshold is 0 (any nonzero
 // diagonal entry is a pivot, as in an L D L^T without pivoting). When it
 // pivoted off the diagonal all the same (a zero diagonal entry met, with
-// nonzeros left in its column), CHOLMOD's simplicial L D L^T (its own
-// fill-reducing order, no pivoting), D read from the factor.
+// nonzeros left in its column), or failed (out of memory: its LU holds L and
+// U, int-indexed), CHOLMOD's simplicial L D L^T (its own fill-reducing
+// order, no pivoting), D read from the factor.
 // CHOLMOD has no supernodal L D L^T: on Rotor 37's K (61,098 dofs, 28 GFlop)
 // its simplicial one took 23-33 s against 1.5-1.9 s for the supernodal
 // L L^T (bench/RESULTS.md), the Sturm count most of a lowest_modes call.
@@ -30,7 +31,7 @@
 // (Bunch-Kaufman, diagonal pivoting with 1x1 and 2x2 blocks, backward
 // stable), the inertia of each block of D.
 //
-// Out of memory (UMFPACK's and CHOLMOD's status, LAPACKE's workspace) throws std::bad_alloc.
+// Out of memory (CHOLMOD's status, LAPACKE's workspace) throws std::bad_alloc.
 
 #include <string>
 
