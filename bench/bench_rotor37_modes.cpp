@@ -120,6 +120,12 @@ const Rotor37* model_or_skip(benchmark::State& state) {
   return &*rotor37();
 }
 
+/// Each benchmark here: one run, in seconds, the wall time and the CPU time
+/// of the whole process (all BLAS threads).
+void one_timed_run(benchmark::internal::Benchmark* b) {
+  b->Unit(benchmark::kSecond)->Iterations(1)->MeasureProcessCPUTime()->UseRealTime();
+}
+
 double peak_megabytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -163,10 +169,7 @@ BENCHMARK(cholmod_factor_k)
     ->ArgName("simplicial")
     ->Arg(0)
     ->Arg(1)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// CHOLMOD's supernodal L L^T of M (explicit zeros dropped): for omega_max.
 void cholmod_factor_m(benchmark::State& state) {
@@ -184,10 +187,7 @@ void cholmod_factor_m(benchmark::State& state) {
   state.counters["peak_MB"] = peak_megabytes();
 }
 BENCHMARK(cholmod_factor_m)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// The Sturm count of lowest_modes' check: the inertia of K - tau M, tau =
 /// (2 pi 18,800 Hz)^2 just above the 50th mode (18,713 Hz), by
@@ -213,10 +213,7 @@ BENCHMARK(sturm_count)
     ->ArgName("simplicial")
     ->Arg(0)
     ->Arg(1)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// Spectra's SymGEigsShiftSolver on CholmodShiftInvert, ncv = range(0),
 /// tolerance 1e-12 (lowest_modes' Lanczos setting); the time includes the
@@ -257,10 +254,7 @@ BENCHMARK(spectra_cholmod)
     ->ArgName("ncv")
     ->Arg(100)
     ->Arg(150)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// What lowest_modes did before this round: Spectra's shift-invert Lanczos
 /// on Spectra's SymShiftInvert (Eigen's SparseLU of K), ncv 101 as
@@ -286,10 +280,7 @@ void spectra_sparselu(benchmark::State& state) {
   state.counters["peak_MB"] = peak_megabytes();
 }
 BENCHMARK(spectra_sparselu)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// block_shift_invert with block size range(0), n_kept = 50 + range(1),
 /// max_basis = range(2); tolerance 1e-9 (the default).
@@ -329,10 +320,7 @@ BENCHMARK(block_krylov_schur)
     ->Args({32, 16, 402})
     ->Args({48, 24, 410})
     ->Args({64, 32, 402})
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// rsi::lowest_modes(K, M, 50, sparse): the block method with its default
 /// parameters, then omega_max (infinite here: CalculiX's M of Rotor 37 is
@@ -349,10 +337,7 @@ void lowest_modes_sparse(benchmark::State& state) {
   state.counters["peak_MB"] = peak_megabytes();
 }
 BENCHMARK(lowest_modes_sparse)
-    ->Unit(benchmark::kSecond)
-    ->Iterations(1)
-    ->MeasureProcessCPUTime()
-    ->UseRealTime();
+    ->Apply(one_timed_run);
 
 /// ccx's frequencies [Hz] from the EIGENVALUE OUTPUT table of its .dat file.
 std::vector<double> ccx_frequencies(const std::string& path) {
