@@ -165,11 +165,7 @@ void cholmod_factor_k(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(cholmod_factor_k)
-    ->ArgName("simplicial")
-    ->Arg(0)
-    ->Arg(1)
-    ->Apply(one_timed_run);
+BENCHMARK(cholmod_factor_k)->ArgName("simplicial")->Arg(0)->Arg(1)->Apply(one_timed_run);
 
 /// CHOLMOD's supernodal L L^T of M (explicit zeros dropped): for omega_max.
 void cholmod_factor_m(benchmark::State& state) {
@@ -186,8 +182,7 @@ void cholmod_factor_m(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(cholmod_factor_m)
-    ->Apply(one_timed_run);
+BENCHMARK(cholmod_factor_m)->Apply(one_timed_run);
 
 /// The Sturm count of lowest_modes' check: the inertia of K - tau M, tau =
 /// (2 pi 18,800 Hz)^2 just above the 50th mode (18,713 Hz), by
@@ -209,11 +204,7 @@ void sturm_count(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(sturm_count)
-    ->ArgName("simplicial")
-    ->Arg(0)
-    ->Arg(1)
-    ->Apply(one_timed_run);
+BENCHMARK(sturm_count)->ArgName("simplicial")->Arg(0)->Arg(1)->Apply(one_timed_run);
 
 /// Spectra's SymGEigsShiftSolver on CholmodShiftInvert, ncv = range(0),
 /// tolerance 1e-12 (lowest_modes' Lanczos setting); the time includes the
@@ -250,11 +241,7 @@ void spectra_cholmod(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(spectra_cholmod)
-    ->ArgName("ncv")
-    ->Arg(100)
-    ->Arg(150)
-    ->Apply(one_timed_run);
+BENCHMARK(spectra_cholmod)->ArgName("ncv")->Arg(100)->Arg(150)->Apply(one_timed_run);
 
 /// What lowest_modes did before this round: Spectra's shift-invert Lanczos
 /// on Spectra's SymShiftInvert (Eigen's SparseLU of K), ncv 101 as
@@ -279,8 +266,7 @@ void spectra_sparselu(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(spectra_sparselu)
-    ->Apply(one_timed_run);
+BENCHMARK(spectra_sparselu)->Apply(one_timed_run);
 
 /// block_shift_invert with block size range(0), n_kept = 50 + range(1),
 /// max_basis = range(2); tolerance 1e-9 (the default).
@@ -336,8 +322,7 @@ void lowest_modes_sparse(benchmark::State& state) {
   }
   state.counters["peak_MB"] = peak_megabytes();
 }
-BENCHMARK(lowest_modes_sparse)
-    ->Apply(one_timed_run);
+BENCHMARK(lowest_modes_sparse)->Apply(one_timed_run);
 
 /// ccx's frequencies [Hz] from the EIGENVALUE OUTPUT table of its .dat file.
 std::vector<double> ccx_frequencies(const std::string& path) {
