@@ -63,7 +63,8 @@ now_ms() { echo $(($(date +%s%N) / 1000000)); }
 interrupt() {
   local name=$1 signal=$2 expected=$3 ready=$4
   shift 4
-  local out=$work/out-$name child=""
+  local out=$work/out-$name child="" started
+  started=$(now_ms)
   "$@" --out "$out" >"$work/log" 2>"$work/err" &
   local pid=$!
   case $ready in
@@ -96,8 +97,9 @@ interrupt() {
     fail "$name: no ${ready#child:} seen while rsi ran"
     return
   fi
-  local before
+  local before state
   before=$(now_ms)
+  state=$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null) # R, S, D; Z: it had finished
   kill "-$signal" "$pid"
   wait "$pid"
   local status=$?
@@ -106,7 +108,9 @@ interrupt() {
   local temporaries
   temporaries=$(find "$work" -name '*.tmp[0-9]*' -o -name '.rsi-*' | head -n 5)
   if [ "$status" -ne "$expected" ]; then
-    fail "$name: exit $status after SIG$signal, expected $expected; stderr: $(tail -n 3 "$work/err")"
+    fail "$name: exit $status after SIG$signal sent $((before - started)) ms after the start" \
+      "(process state ${state:-gone}), expected $expected; stderr: $(tail -n 3 "$work/err");" \
+      "stdout: $(tail -n 3 "$work/log")"
   elif [ "$(grep -c '^rsi: error:' "$work/err")" -ne 1 ] ||
     ! grep -q "^rsi: error: interrupted by SIG$signal" "$work/err"; then
     fail "$name: not one 'rsi: error: interrupted by SIG$signal' line: $(cat "$work/err")"
