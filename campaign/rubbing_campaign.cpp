@@ -8,10 +8,17 @@ namespace rsi {
 
 std::vector<RubbingCampaignRun> rubbing_campaign_runs(const RubbingSetup& setup) {
   std::vector<RubbingCampaignRun> runs;
-  if (setup.full_revolutions > 0.0) runs.push_back({"full", 0, {}, {}, {}, {}, {}});
+  const auto run_of = [](const std::string& method, int modes, int fixed_interface_modes) {
+    RubbingCampaignRun r;
+    r.method = method;
+    r.modes = modes;
+    r.fixed_interface_modes = fixed_interface_modes;
+    return r;
+  };
+  if (setup.full_revolutions > 0.0) runs.push_back(run_of("full", 0, 0));
   for (const RubbingRuns& item : setup.campaign)
     for (int modes : item.modes)
-      runs.push_back({item.method, modes, {}, {}, {}, {}, {}});
+      runs.push_back(run_of(item.method, modes, item.fixed_interface_modes));
   return runs;
 }
 
@@ -32,7 +39,8 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
   };
   RubbingRunOptions o;
   o.method = entry.method;
-  o.modes = entry.modes;
+  o.modes = entry.method == "cc" ? entry.fixed_interface_modes : entry.modes;
+  if (entry.method == "cc") o.boundary_modes = entry.modes;
   o.revolutions = entry.method == "full" ? model.setup().full_revolutions : model.setup().revolutions;
   if (entry.method == "full") o.revolutions_key = "rubbing.campaign.full_revolutions";
   o.checkpoint = checkpoint;

@@ -31,7 +31,8 @@ namespace rsi {
 /// One run of the campaign, and what it left (its rows kept for the norms).
 struct RubbingCampaignRun {
   std::string method;
-  int modes = 0;
+  int modes = 0;                 ///< cc: n_c, the boundary's characteristic constraint modes
+  int fixed_interface_modes = 0; ///< cc: eta
   RubbingRun run;
   std::vector<double> response;
   std::vector<Eigen::VectorXd> lambda_n;

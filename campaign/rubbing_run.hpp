@@ -56,8 +56,11 @@ RubbingModel load_rubbing_model(const ComponentCase& c, const ComponentLoadOptio
 using ComponentRowSink = std::function<void(const HistoryRow& row, double response)>;
 
 struct RubbingRunOptions {
-  std::string method = "full"; ///< full, cb, ccm, guyan, macneal
+  std::string method = "full"; ///< full, cb, ccm, guyan, macneal, cc
   int modes = 0;
+  /// cc: n_c, the characteristic constraint modes kept of the boundary
+  /// (characteristic_constraint.hpp); 0 for the other methods.
+  int boundary_modes = 0;
   double revolutions = 0.0;    ///< 0: the case's
   /// The case key `revolutions` comes from, named when the run's step count
   /// is refused (the campaign's full run: rubbing.campaign.full_revolutions).

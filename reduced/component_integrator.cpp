@@ -55,8 +55,7 @@ ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidC
                                          const ComponentIntegratorOptions& options)
     : m_contact(contact_solve_of(casing, options))
     , m_liner(dynamic_cast<LinerContactSolve*>(m_contact.get())) {
-  m_casing = std::make_unique<RigidCasingPart>(
-      casing, static_cast<int>(basis.boundary_position.size()), checked_dt(options));
+  m_casing = std::make_unique<RigidCasingPart>(casing, basis.n_boundary(), checked_dt(options));
   init(basis, options);
 }
 
@@ -79,7 +78,8 @@ void ComponentIntegrator::init(const ReducedBasis& basis,
                                const ComponentIntegratorOptions& options) {
   m_dt = options.dt;
   m_r = basis.n_reduced();
-  const int nb = static_cast<int>(basis.boundary_position.size());
+  m_boundary_rank = static_cast<int>(basis.boundary_shapes.cols());
+  const int nb = basis.n_boundary();
   for (int b : basis.boundary_position)
     if (b < 0 || b >= m_r)
       throw std::invalid_argument(kWhere + "boundary position " + std::to_string(b) +
@@ -136,6 +136,22 @@ void ComponentIntegrator::init(const ReducedBasis& basis,
   m_lambda.setZero(3 * m_nc);
 }
 
+void ComponentIntegrator::solve_contact(StepReport& report) {
+  if (m_boundary_rank == 0) return m_contact->solve(m_casing->prediction(), m_n + 1, report);
+  try {
+    m_contact->solve(m_casing->prediction(), m_n + 1, report);
+  } catch (const ComponentIntegrationError& e) {
+    // u_B = Psi_c q_c: B_q = B_B [0 Psi_c] has rank <= n_c, and so has W.
+    // More closed contact directions than n_c make W's active block
+    // singular, its multipliers not unique: the boundary is too coarse.
+    throw ComponentIntegrationError(
+        std::string(e.what()) + " (the boundary in " + std::to_string(m_boundary_rank) +
+            " characteristic constraint modes: W has rank at most " +
+            std::to_string(m_boundary_rank) + ", fewer than the closed contacts may need)",
+        remedied_by({Remedy::more_boundary_modes}));
+  }
+}
+
 void ComponentIntegrator::start() {
   start(Eigen::VectorXd::Zero(m_r));
 }
@@ -156,7 +172,7 @@ void ComponentIntegrator::start(const Eigen::Ref<const Eigen::VectorXd>& q0) {
     // (a flexible casing held where it is: W the rotor's).
     m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), 0.0, 0.0);
     StepReport unused;
-    m_contact->solve(m_casing->prediction(), m_n + 1, unused);
+    solve_contact(unused);
     m_lambda = m_contact->lambda_next();
     m_rotor->start_balance(m_lambda);
   }
@@ -178,7 +194,7 @@ StepReport ComponentIntegrator::step() {
     m_casing->add_flexibility(m_w_step);
     m_coulomb->replace_contact_matrix(m_w_step);
   }
-  m_contact->solve(m_casing->prediction(), m_n + 1, report);
+  solve_contact(report);
   const Eigen::VectorXd& solved = m_contact->lambda_next();
   m_rotor->correct(solved);
   m_casing->correct(solved);

@@ -165,12 +165,18 @@ public:
   long sweeps() const { return m_contact->sweeps(); }
 
 private:
+  /// The contact's solve of this step's prediction; a failure with a basis
+  /// of characteristic constraint modes says that W's rank limits it.
+  void solve_contact(StepReport& report);
   /// The constructors' common part, after m_casing is set.
   void init(const ReducedBasis& basis, const ComponentIntegratorOptions& options);
 
   double m_dt = 0.0;
   double m_omega_max = 0.0;
   int m_r = 0, m_nc = 0;
+  /// n_c of a basis of characteristic constraint modes (0: u_B coordinates):
+  /// W = B_q A^-1 B_q^T has rank at most n_c (solve_contact).
+  int m_boundary_rank = 0;
   int m_n = 0;
   std::unique_ptr<ComponentContactSolve> m_contact;
   LinerContactSolve* m_liner = nullptr; ///< m_contact when it is the liner's

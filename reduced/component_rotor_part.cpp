@@ -8,8 +8,9 @@ ComponentRotorPart::ComponentRotorPart(const ReducedBasis& basis,
                                        const ComponentIntegratorOptions& options)
     : m_dt(options.dt)
     , m_r(basis.n_reduced())
-    , m_boundary(basis.boundary_position) {
-  m_nb = static_cast<int>(m_boundary.size());
+    , m_boundary(basis.boundary_position)
+    , m_shapes(basis.boundary_shapes) {
+  m_nb = basis.n_boundary();
   std::vector<char> is_b(m_r, 0);
   for (int b : m_boundary)
     is_b[b] = 1;
@@ -51,6 +52,22 @@ Eigen::VectorXd ComponentRotorPart::take(const Eigen::VectorXd& a, const std::ve
   for (size_t i = 0; i < rows.size(); ++i)
     out(i) = a(rows[i]);
   return out;
+}
+
+Eigen::VectorXd ComponentRotorPart::boundary_of(const Eigen::VectorXd& x) const {
+  if (m_shapes.size() == 0) return take(x, m_boundary);
+  return m_shapes * x.tail(m_shapes.cols());
+}
+
+Eigen::MatrixXd ComponentRotorPart::boundary_transpose(const Eigen::MatrixXd& rows) const {
+  Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(m_r, rows.rows());
+  if (m_shapes.size() != 0) {
+    bt.bottomRows(m_shapes.cols()) = m_shapes.transpose() * rows.transpose();
+    return bt;
+  }
+  for (int k = 0; k < m_nb; ++k)
+    bt.row(m_boundary[k]) = rows.col(k).transpose();
+  return bt;
 }
 
 Eigen::VectorXd ComponentRotorPart::external_force(double t) const {

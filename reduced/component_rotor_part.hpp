@@ -2,8 +2,9 @@
 // The rotor part of a reduced component's integration
 // (component_integrator.hpp): the component's share of the central-difference
 // step (*) of that header in the reduced coordinates q of a ReducedBasis
-// (every basis keeps the boundary dofs u_B as coordinates, at
-// ReducedBasis::boundary_position), whichever constraint determines the
+// (the boundary dofs u_B are coordinates of q, at
+// ReducedBasis::boundary_position, or, for characteristic constraint modes,
+// u_B = Psi_c q_c: boundary_of), whichever constraint determines the
 // step's multiplier: mass_carrying_boundary_part.hpp (CB, CCM, Guyan; the
 // contact at x_{n+1} determines lambda_n) or massless_boundary_part.hpp
 // (MacNeal; a static balance of u_B at every time level, lambda_{n+1} with
@@ -89,6 +90,12 @@ protected:
                                const std::vector<int>& cols);
   /// The entries `rows` of a.
   static Eigen::VectorXd take(const Eigen::VectorXd& a, const std::vector<int>& rows);
+  /// u_B of the reduced coordinates x: its entries at m_boundary, or
+  /// Psi_c q_c (characteristic constraint modes).
+  Eigen::VectorXd boundary_of(const Eigen::VectorXd& x) const;
+  /// B_q^T = (rows U)^T, r x 3 nc, for the contact rows B_B (3 nc x n_B) and
+  /// u_B = U x (a selection, or Psi_c on q_c).
+  Eigen::MatrixXd boundary_transpose(const Eigen::MatrixXd& rows) const;
   /// What to change when the reduced mass fails: a consistent mass may be
   /// singular (Rotor 37's C3D15), T^T M T with it.
   static FailureAdvice mass_remedy();
@@ -97,7 +104,8 @@ protected:
 
   double m_dt;
   int m_r, m_nb, m_ni;
-  std::vector<int> m_boundary; ///< positions of u_B in q (boundary order)
+  std::vector<int> m_boundary; ///< positions of u_B in q (boundary order); none for CC
+  Eigen::MatrixXd m_shapes;    ///< Psi_c, n_B x n_c (CC: u_B = Psi_c q_c); empty otherwise
   std::vector<int> m_interior; ///< the other positions, ascending
   Eigen::MatrixXd m_k;         ///< K^
   Eigen::MatrixXd m_m;         ///< M^

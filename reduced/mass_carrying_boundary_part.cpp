@@ -21,9 +21,7 @@ MassCarryingBoundaryPart::MassCarryingBoundaryPart(const ReducedBasis& basis,
                                     mass_remedy());
   m_p = (m_dt * m_dt) * llt.solve(m_k);
   if (m_c.size()) m_d = m_dt * llt.solve(Eigen::MatrixXd(m_c.asDiagonal()));
-  Eigen::MatrixXd bt = Eigen::MatrixXd::Zero(m_r, rows.rows());
-  for (int k = 0; k < m_nb; ++k)
-    bt.row(m_boundary[k]) = rows.col(k).transpose();
+  const Eigen::MatrixXd bt = boundary_transpose(rows);
   m_g = (m_dt * m_dt) * llt.solve(bt);
   m_w = bt.transpose() * m_g;
   if (m_force) {
@@ -44,7 +42,7 @@ void MassCarryingBoundaryPart::start(const Eigen::Ref<const Eigen::VectorXd>& q0
     m_xp = m_x - h2 * llt.solve(m_k * m_x);
   else
     m_xp = m_x - h2 * llt.solve(Eigen::VectorXd(m_k * m_x - m_f0 - std::cos(m_phi_f) * m_f1));
-  m_ub = take(m_x, m_boundary);
+  m_ub = boundary_of(m_x);
 }
 
 void MassCarryingBoundaryPart::predict(const Eigen::VectorXd& /*lambda*/, double t_n,
@@ -57,7 +55,7 @@ void MassCarryingBoundaryPart::predict(const Eigen::VectorXd& /*lambda*/, double
     m_cn = std::cos(m_omega_f * t_n + m_phi_f);
     m_xn += m_gf0 + m_cn * m_gf1;
   }
-  m_ut = take(m_xn, m_boundary);
+  m_ut = boundary_of(m_xn);
 }
 
 void MassCarryingBoundaryPart::correct(const Eigen::VectorXd& lambda) {
@@ -74,7 +72,7 @@ void MassCarryingBoundaryPart::add_step_work() {
 void MassCarryingBoundaryPart::advance() {
   m_xp.swap(m_x);
   m_x.swap(m_xn);
-  m_ub = take(m_x, m_boundary);
+  m_ub = boundary_of(m_x);
 }
 
 void MassCarryingBoundaryPart::state_in_basis(Eigen::VectorXd& x, Eigen::VectorXd& xp) const {

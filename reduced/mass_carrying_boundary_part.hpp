@@ -1,7 +1,7 @@
 #pragma once
 // The rotor part of a reduced component with a mass-carrying boundary (CB,
-// CCM, Guyan; M^ positive definite): scheme 1 of component_integrator.hpp,
-// the whole x = q advanced explicitly (component_rotor_part.hpp).
+// CCM, Guyan, characteristic constraint modes; M^ positive definite): scheme 1 of
+// component_integrator.hpp, the whole x = q advanced explicitly (component_rotor_part.hpp).
 //    A = M^ + dt/2 C^ (Cholesky once, status checked). The step n -> n+1:
 //      x~ = 2 x_n - x_{n-1} - dt^2 A^-1 K^ x_n - dt A^-1 C^ (x_n - x_{n-1})
 //           + dt^2 A^-1 f(t_n)   (dt^2 A^-1 f0 and dt^2 A^-1 f1 formed once),
@@ -40,7 +40,7 @@ public:
   const Eigen::VectorXd& trial_boundary() const override { return m_ut; }
   const Eigen::VectorXd& boundary() const override { return m_ub; }
   void correct(const Eigen::VectorXd& lambda) override;
-  Eigen::VectorXd boundary_increment() const override { return take(m_dx, m_boundary); }
+  Eigen::VectorXd boundary_increment() const override { return boundary_of(m_dx); }
   void add_step_work() override;
   void advance() override;
   bool finite() const override { return m_x.allFinite(); }

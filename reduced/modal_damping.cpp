@@ -1,5 +1,6 @@
 #include "modal_damping.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -13,10 +14,14 @@ Eigen::VectorXd modal_damping(const ReducedBasis& basis, double zeta) {
   const int r = basis.n_reduced();
   Eigen::VectorXd c = Eigen::VectorXd::Zero(r);
   if (zeta == 0.0) return c;
+  // The boundary's coordinates, undamped: u_B's entries of q, or the
+  // characteristic constraint modes' q_c (the last n_c entries).
   std::vector<char> boundary(r, 0);
   for (int j : basis.boundary_position)
     boundary.at(j) = 1;
-  const int n_modes = r - static_cast<int>(basis.boundary_position.size());
+  for (Eigen::Index j = r - basis.boundary_shapes.cols(); j < r; ++j)
+    boundary.at(j) = 1;
+  const int n_modes = r - static_cast<int>(std::count(boundary.begin(), boundary.end(), 1));
   if (basis.mode_omega.size() != n_modes)
     throw std::invalid_argument("modal_damping: the " + basis.method + " basis has " +
                                 std::to_string(n_modes) + " modal coordinates but " +

@@ -12,6 +12,8 @@ const char* input_name(FailedInput input) {
     return "";
   case FailedInput::mode_count:
     return "--modes";
+  case FailedInput::boundary_mode_count:
+    return "--boundary-modes";
   case FailedInput::method:
     return "--method";
   case FailedInput::casing_mode_count:
@@ -70,6 +72,8 @@ const char* remedy_words(Remedy remedy) {
     return "; use a smaller rubbing.step_safety, without --force";
   case Remedy::smaller_step_safety_or_friction:
     return "; use a smaller rubbing.step_safety or rubbing.friction_coefficient";
+  case Remedy::more_boundary_modes:
+    return "; keep more characteristic constraint modes (--boundary-modes) or run --method cb";
   case Remedy::thicker_liner_or_larger_clearance:
     return "; the liner model (bars in front of a rigid backing) ends there: give a thicker "
            "liner (rubbing.liner.thickness), a harder one (rubbing.liner.yield_stress), or a "

@@ -22,13 +22,18 @@ public:
 };
 
 struct ReducedBasis {
-  std::string method;             ///< "cb", "ccm", "guyan" or "macneal"
+  std::string method;             ///< "cb", "ccm", "guyan", "macneal" or "cc"
   int n_modes = 0;                ///< eta (CB), psi (CCM, MacNeal), 0 (Guyan)
   Eigen::MatrixXd transformation; ///< T, n x r
   Eigen::MatrixXd stiffness;      ///< K^ = T^T K T, r x r
   Eigen::MatrixXd mass;           ///< M^ = T^T M T, r x r (MacNeal: diag(0_B, I_psi))
-  /// Position in q of each boundary dof, in the order of the partition's boundary.
+  /// Position in q of each boundary dof, in the order of the partition's
+  /// boundary; empty for "cc", whose boundary is not a set of coordinates.
   std::vector<int> boundary_position;
+  /// "cc" (characteristic_constraint.hpp): u_B = boundary_shapes q_c, the
+  /// n_B x n_c characteristic constraint modes, q_c the last n_c entries of
+  /// q; empty for the other methods.
+  Eigen::MatrixXd boundary_shapes;
   /// omega_i [rad/s] of the kept modes (CB: fixed-interface, CCM and MacNeal:
   /// free-interface), in the order of their coordinates in q (the positions
   /// that are not boundary positions); empty for Guyan. For modal damping.
@@ -58,6 +63,11 @@ struct ReducedBasis {
   Eigen::VectorXd mode_participation;
 
   int n_reduced() const { return static_cast<int>(transformation.cols()); }
+  /// n_B: the boundary dofs the basis represents (coordinates or shapes).
+  int n_boundary() const {
+    return boundary_shapes.size() != 0 ? static_cast<int>(boundary_shapes.rows())
+                                       : static_cast<int>(boundary_position.size());
+  }
 };
 
 } // namespace rsi

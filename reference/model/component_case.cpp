@@ -376,15 +376,25 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
     if (!runs.is_array() || runs.empty())
       campaign.fail(campaign.full("runs"),
                     "must be a non-empty array of {\"method\": \"cb\"|\"ccm\"|\"macneal\", "
-                    "\"modes\": [..]}");
+                    "\"modes\": [..]} or {\"method\": \"cc\", \"modes\": [..], "
+                    "\"fixed_interface_modes\": N}");
     for (size_t i = 0; i < runs.size(); ++i) {
       ObjectReader run(runs[i], campaign.full("runs") + "[" + std::to_string(i) + "]", r.source());
       RubbingRuns item;
       item.method = string_value(run, runs[i], "method");
-      if (item.method != "cb" && item.method != "ccm" && item.method != "macneal")
-        run.fail(run.full("method"), "must be \"cb\", \"ccm\" or \"macneal\", got \"" +
+      if (item.method != "cb" && item.method != "ccm" && item.method != "macneal" &&
+          item.method != "cc")
+        run.fail(run.full("method"), "must be \"cb\", \"ccm\", \"macneal\" or \"cc\", got \"" +
                                          item.method + "\"");
       item.modes = integer_list(run, runs[i], "modes", 1, 100000);
+      // cc: the boundary's characteristic constraint modes are the counts
+      // varied (modes), on one Craig-Bampton basis of eta fixed-interface modes.
+      if (item.method == "cc")
+        item.fixed_interface_modes = run.integer("fixed_interface_modes", 0, 100000);
+      else if (runs[i].is_object() && runs[i].contains("fixed_interface_modes"))
+        run.fail(run.full("fixed_interface_modes"),
+                 "only for \"method\": \"cc\" (the fixed-interface modes under its "
+                 "characteristic constraint modes); this run's method is \"" + item.method + "\"");
       run.finish();
       out.campaign.push_back(item);
     }

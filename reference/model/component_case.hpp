@@ -68,8 +68,11 @@ struct ModalCampaign {
 
 /// One method of the rubbing campaign and its mode counts.
 struct RubbingRuns {
-  std::string method; ///< "cb", "ccm" or "macneal"
+  std::string method; ///< "cb", "ccm", "macneal" or "cc"
+  /// The mode counts; for "cc" the characteristic constraint modes n_c
+  /// (the boundary's), its fixed-interface modes being fixed_interface_modes.
   std::vector<int> modes;
+  int fixed_interface_modes = 0; ///< "cc": eta, the Craig-Bampton modes kept
 };
 
 /// The "rubbing" object: a contact run on the rigid casing (issue 12).

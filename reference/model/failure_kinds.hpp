@@ -33,12 +33,13 @@ namespace rsi {
 /// The input a failure is about, when the message names it first
 /// ("INPUT: what failed").
 enum class FailedInput {
-  unnamed,           ///< the text names what failed itself
-  mode_count,        ///< the number of modes a reduction keeps
-  method,            ///< the reduction method (full, cb, ccm, guyan, macneal)
-  casing_mode_count, ///< the number of casing modes of a reduced run
-  time_step_value,   ///< the case's time step, the text starting with its value ("= dt s ...")
-  ccx_cache,         ///< the folder ccx's and gmsh's outputs are cached in
+  unnamed,             ///< the text names what failed itself
+  mode_count,          ///< the number of modes a reduction keeps
+  boundary_mode_count, ///< the characteristic constraint modes a reduction keeps
+  method,              ///< the reduction method (full, cb, ccm, guyan, macneal)
+  casing_mode_count,   ///< the number of casing modes of a reduced run
+  time_step_value,     ///< the case's time step, the text starting with its value ("= dt s ...")
+  ccx_cache,           ///< the folder ccx's and gmsh's outputs are cached in
 };
 
 /// What the user can change, appended to the kernel's text in this order.
@@ -63,6 +64,7 @@ enum class Remedy {
   smaller_step_safety_unforced,            ///< a reduced component run blew up
   smaller_step_safety_or_friction,         ///< a reduced component run's contact solve failed
   thicker_liner_or_larger_clearance,       ///< a tip wore the abradable liner through
+  more_boundary_modes, ///< a too coarse boundary of characteristic constraint modes
 };
 
 /// Which input failed and what to change, in the kernel's terms.

@@ -259,13 +259,14 @@ expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" simulate "$work/thin-bl
 expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" reduce "$work/thin-blades.json" --method ccm --modes 10 --out "$work/out"
 expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" campaign "$work/thin-blades.json" --no-report --out "$work/out"
 expect 2 "bladed_disk.blade_section.thickness" -- "$rsi" export "$work/thin-blades.json" --out "$work/out"
-expect 2 "--method: must be full, cb, ccm, guyan or macneal, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
-expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal: component cases), got 'macneal'" -- "$rsi" simulate "$good" --method macneal --modes 10 --out "$work/out"
+expect 2 "--method: must be full, cb, ccm, guyan, macneal or cc, got 'modal'" -- "$rsi" simulate "$good" --method modal --out "$work/out"
+expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal, cc: component cases), got 'macneal'" -- "$rsi" simulate "$good" --method macneal --modes 10 --out "$work/out"
 expect 2 "--modes: Craig-Bampton takes 0 to 638" -- "$rsi" simulate "$good" --method cb --modes 639 --out "$work/out"
 expect 2 "--modes: Craig-Chang-Martinez takes 0 to 638" -- "$rsi" simulate "$good" --method ccm --modes 700 --out "$work/out"
 expect 2 "--modes: Guyan reduction keeps no modes" -- "$rsi" simulate "$good" --method guyan --modes 2 --out "$work/out"
 expect 2 "--modes: must be an integer in [0, the method's maximum]" -- "$rsi" simulate "$good" --method cb --modes 1e3 --out "$work/out"
 expect 2 "--full-field: only for the reduced methods" -- "$rsi" simulate "$good" --method full --full-field --out "$work/out"
+expect 2 "--boundary-modes: only for --method cc on a component case" -- "$rsi" simulate "$good" --method cb --modes 10 --boundary-modes 3 --out "$work/out"
 
 # damping (issue 12): every key named with its range
 expect 2 "damping.rayleigh.alpha': must be in [0, inf) 1/s, got -1.0" -- "$rsi" simulate "$work/damping-alpha.json" --out "$work/out"
@@ -436,6 +437,8 @@ rubbing_variant rotation-type "{$rub, \"friction_coefficient\": 0.1}" ', "rotati
 rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
 rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
 rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
+rubbing_variant campaign-cc "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cc\", \"modes\": [1]}]}}"
+rubbing_variant campaign-cb-fixed "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cb\", \"modes\": [1], \"fixed_interface_modes\": 2}]}}"
 # rubbing.liner: bad values refused naming the key and the range.
 lin='"thickness": 1, "young_modulus": 1000, "hardening_modulus": 0'
 rubbing_variant liner-yield "{$rub, \"friction_coefficient\": 0.1, \"liner\": {$lin, \"yield_stress\": -1, \"cells_around\": 10}}"
@@ -475,8 +478,12 @@ expect 2 "--speeds: the speeds must ascend, got '200,100'" -- "$rsi" modes "$wor
 expect 2 "key 'rubbing.campaign': missing, nothing to run" -- "$rsi" campaign "$work/rubbing-no-campaign.json" --out "$work/out"
 expect 2 "--jobs: a component case's campaign runs one run at a time" -- "$rsi" campaign "$work/rubbing-campaign.json" --jobs 2 --out "$work/out"
 expect 2 "--target-e2: only for the paper's case" -- "$rsi" campaign "$work/rubbing-campaign.json" --target-e2 0.1 --out "$work/out"
-expect 2 "key 'rubbing.campaign.runs[0].method': must be \"cb\", \"ccm\" or \"macneal\", got \"guyan\"" -- "$rsi" campaign "$work/rubbing-campaign-method.json" --out "$work/out"
+expect 2 "key 'rubbing.campaign.runs[0].method': must be \"cb\", \"ccm\", \"macneal\" or \"cc\", got \"guyan\"" -- "$rsi" campaign "$work/rubbing-campaign-method.json" --out "$work/out"
 expect 2 "--full-field: only for the paper's case" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --full-field --out "$work/out"
+expect 2 "key 'rubbing.campaign.runs[0].fixed_interface_modes': missing (required)" -- "$rsi" campaign "$work/rubbing-campaign-cc.json" --out "$work/out"
+expect 2 "key 'rubbing.campaign.runs[0].fixed_interface_modes': only for \"method\": \"cc\"" -- "$rsi" campaign "$work/rubbing-campaign-cb-fixed.json" --out "$work/out"
+expect 2 "--boundary-modes: characteristic constraint modes: 1 to 3 boundary modes (the boundary dofs), got 0" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cc --modes 1 --out "$work/out"
+expect 2 "--boundary-modes: only for --method cc (characteristic constraint modes)" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cb --modes 1 --boundary-modes 2 --out "$work/out"
 
 # Matrix Market folders in rsi export's layout (the good one written by rsi export).
 "$rsi" export "$work/ccx-good.json" --out "$work/mm" >/dev/null

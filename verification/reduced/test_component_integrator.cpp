@@ -39,9 +39,11 @@
 #include <cstdio>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/SparseCore>
 #include <gtest/gtest.h>
 
+#include "characteristic_constraint.hpp"
 #include "component_integrator.hpp"
 #include "component_run.hpp"
 #include "modal_damping.hpp"
@@ -262,6 +264,51 @@ TEST(ComponentIntegrator, CraigBamptonAllModesMatchesExactSolutionAndMacNeal) {
   EXPECT_LE(c.y, 100.0 * eps * c.y_scale + normal_bound(dt_cb));
   // The two reductions agree within the sum of their bounds.
   EXPECT_LE(diff_x, normal_bound(0.04) + normal_bound(dt_cb) + 1e-6 * m.x_scale + 1e-11);
+}
+
+// Characteristic constraint modes (reduced/bases/characteristic_constraint.hpp)
+// with every boundary mode: T_cc = T_cb S, S = diag(I, Psi_c) invertible, and
+// central differences with the contact rows B_q = B_B U (u_B = Psi_c q_c) are
+// invariant under the change of coordinates q_cb = S q_cc (W = dt^2 B_q A^-1
+// B_q^T is the same matrix): the two runs differ by rounding only. Each step
+// rounds r-term products in coordinates scaled by S (relative r eps cond(S),
+// cond(S) = cond(Psi_c) = sqrt(cond(M^_BB)) for M^_BB-orthonormal Psi_c), and
+// central differences carry an error at most linearly over the N steps:
+// |x_cc - x_cb| <= N r eps sqrt(cond(M^_BB)) max|x| while the contact makes the
+// same decisions (the contact work compared with the same bound).
+TEST(ComponentIntegrator, CharacteristicConstraintAllBoundaryModesIsCraigBampton) {
+  const Model model = chain(1e-4);
+  const ReducedBasis cb = reduce(model.k, model.m, model.boundary, "cb", 3);
+  const ReducedBasis cc =
+      characteristic_constraint(model.k, model.m, make_partition(6, model.boundary), 3, 3);
+  ASSERT_EQ(cc.n_boundary(), 3);
+  ASSERT_TRUE(cc.boundary_position.empty());
+  const double dt = 0.002; // CB's step in the test above
+  const Errors a = run(cb, dt);
+  const Errors b = run(cc, dt);
+  ASSERT_TRUE(a.summary.completed) << a.summary.status;
+  ASSERT_TRUE(b.summary.completed) << b.summary.status;
+  const Eigen::VectorXd m_bb = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                   cb.mass.bottomRightCorner(3, 3), Eigen::EigenvaluesOnly)
+                                   .eigenvalues();
+  const double cond_s = std::sqrt(m_bb(2) / m_bb(0));
+  const int steps = a.summary.steps;
+  const double relative = steps * cb.n_reduced() * 2.2e-16 * cond_s;
+  double dx = 0.0, dy = 0.0;
+  for (int n = 0; n < a.hx.n_rows(); ++n) {
+    dx = std::max(dx, std::abs(a.hx.response[n] - b.hx.response[n]));
+    dy = std::max(dy, std::abs(a.hy.response[n] - b.hy.response[n]));
+  }
+  std::printf("CC-3 with n_c = n_B = 3 against CB-3, %d steps: |x| difference %.3e (%.2e of "
+              "bound), |y| %.3e (%.2e of bound); cond(S) = %.3f; CB's contact work %.6e, CC's "
+              "%.6e\n",
+              steps, dx, dx / (relative * a.x_scale), dy, dy / (relative * a.y_scale), cond_s,
+              a.summary.final_contact_work, b.summary.final_contact_work);
+  ASSERT_EQ(a.hx.n_rows(), b.hx.n_rows());
+  EXPECT_LE(dx, relative * a.x_scale);
+  EXPECT_LE(dy, relative * a.y_scale);
+  EXPECT_NEAR(b.summary.final_contact_work, a.summary.final_contact_work,
+              relative * std::abs(a.summary.final_contact_work));
 }
 
 TEST(ComponentIntegrator, EnergyBalanceClosesToRoundOffWithDampingAndFriction) {

@@ -4,10 +4,14 @@
 //
 // V3: fixed-interface and free modes are M-orthonormal and K-orthogonal,
 //     the Craig-Bampton stiffness is block diagonal.
+//     The characteristic constraint modes (Castanier et al. 2001) are
+//     M^_BB-orthonormal and diagonalise K^_BB.
 // V4: CB(eta = 0) stiffness = Schur complement; CB(0) = CCM(0) = Guyan;
 //     static tip loads reproduced exactly at every eta, psi; CB with every
 //     fixed-interface mode reproduces the full eigenvalues; the reduced
-//     eigenvalues are Rayleigh-Ritz upper bounds decreasing as modes are added.
+//     eigenvalues are Rayleigh-Ritz upper bounds decreasing as modes are added;
+//     CC with every boundary mode has CB's eigenvalues, with fewer it bounds
+//     them from above, decreasing as boundary modes are added.
 //
 // Every reference quantity is computed here independently of reduced/:
 // dense LAPACKE dsygvd eigenproblems and dense Eigen Cholesky factorizations
@@ -35,6 +39,7 @@
 #include <lapacke.h>
 
 #include "bladed_disk.hpp"
+#include "characteristic_constraint.hpp"
 #include "craig_chang_martinez.hpp"
 #include "modal_analysis.hpp"
 #include "partition.hpp"
@@ -716,6 +721,143 @@ TEST_F(ReductionBases, RotationBoundaryConditioning) {
       EXPECT_NE(std::string(ex.what()).find("cond(R_B)"), std::string::npos);
     }
   }
+}
+
+// ------------------------------------ characteristic constraint modes
+
+/// Bound of the eigenvalue change from forming S^T A S (A = K^ or M^ of the CB
+/// basis, S = diag(I, Psi_c)): each product of inner dimension k rounds by at
+/// most k eps |.||.| (first order), two products: 2 k eps (|S||x|)^T |A| (|S||x|),
+/// for K^ and lambda times for M^ (x M^_cc-normalised).
+Eigen::VectorXd congruence_bounds(const ReducedBasis& cb, const Eigen::MatrixXd& s,
+                                  const DenseEigen& e) {
+  const Eigen::MatrixXd sx = s.cwiseAbs() * e.vectors.cwiseAbs();
+  const double k = static_cast<double>(s.rows());
+  Eigen::VectorXd bound(e.values.size());
+  for (int i = 0; i < e.values.size(); ++i)
+    bound(i) = 2.0 * k * eps *
+               (sx.col(i).dot(cb.stiffness.cwiseAbs() * sx.col(i)) +
+                std::abs(e.values(i)) * sx.col(i).dot(cb.mass.cwiseAbs() * sx.col(i)));
+  return bound;
+}
+
+/// S = diag(I_eta, Psi_c) of a CC basis.
+Eigen::MatrixXd congruence(const ReducedBasis& cc, int eta) {
+  const int n_b = static_cast<int>(cc.boundary_shapes.rows());
+  const int n_c = static_cast<int>(cc.boundary_shapes.cols());
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(eta + n_b, eta + n_c);
+  s.topLeftCorner(eta, eta).setIdentity();
+  s.bottomRightCorner(n_b, n_c) = cc.boundary_shapes;
+  return s;
+}
+
+// V3, CC (Castanier, Tan, Pierre 2001, eq. 7): Psi_c^T M^_BB Psi_c = I and
+// Psi_c^T K^_BB Psi_c = diag(lambda_c), lambda_c the eigenvalues of the CB
+// basis's boundary pencil (K^_BB, M^_BB) solved here by dsygvd. Bounds: the
+// B-orthonormality of a Cholesky-reduced solve, n_B eps cond(M^_BB), plus the
+// rounding of S^T M^ S, 2 (eta + n_B) eps |x_i|^T |M^_BB| |x_j|; K^ the same
+// times lambda plus n_B eps ||K^_BB|| |x_i| |x_j|, and dsygvd's own bound.
+TEST_F(ReductionBases, CharacteristicConstraintModesOrthonormalAndDiagonal) {
+  const Model& md = model();
+  const int nb = md.p.n_boundary();
+  for (int eta : {0, 8}) {
+    const ReducedBasis& cb = basis("cb", eta);
+    const ReducedBasis cc = characteristic_constraint(md.bd.stiffness, md.bd.mass, md.p, eta, nb);
+    ASSERT_EQ(cc.n_reduced(), eta + nb);
+    EXPECT_TRUE(cc.boundary_position.empty());
+    const Eigen::MatrixXd k_bb = cb.stiffness.bottomRightCorner(nb, nb);
+    const Eigen::MatrixXd m_bb = cb.mass.bottomRightCorner(nb, nb);
+    const DenseEigen ref = dense_eigen(k_bb, m_bb);
+    const Eigen::VectorXd ref_bound = solve_bounds(ref, norm_inf(k_bb), norm_inf(m_bb));
+    const std::pair<double, double> m_ext = extreme_eigenvalues(m_bb);
+    const double cond_m = m_ext.second / m_ext.first;
+    const Eigen::MatrixXd x = cc.boundary_shapes.cwiseAbs();
+    const Eigen::MatrixXd m_abs = x.transpose() * m_bb.cwiseAbs() * x;
+    const Eigen::VectorXd x_norm = cc.boundary_shapes.colwise().norm();
+    const double k_norm = norm_inf(k_bb);
+    double m_ratio = 0.0, off_ratio = 0.0, diag_ratio = 0.0, diag_err = 0.0;
+    for (int j = 0; j < nb; ++j)
+      for (int i = 0; i < nb; ++i) {
+        const double m_bound = nb * eps * cond_m + 2.0 * (eta + nb) * eps * m_abs(i, j);
+        const double k_round = nb * eps * k_norm * x_norm(i) * x_norm(j);
+        const double mij = cc.mass(eta + i, eta + j);
+        const double kij = cc.stiffness(eta + i, eta + j);
+        m_ratio = std::max(m_ratio, std::abs(mij - (i == j ? 1.0 : 0.0)) / m_bound);
+        if (i != j) {
+          off_ratio =
+              std::max(off_ratio, std::abs(kij) /
+                                      (std::max(ref.values(i), ref.values(j)) * m_bound + k_round));
+        } else {
+          const double err = std::abs(kij - ref.values(i));
+          diag_err = std::max(diag_err, err / ref.values(i));
+          diag_ratio =
+              std::max(diag_ratio, err / (ref_bound(i) + ref.values(i) * m_bound + k_round));
+        }
+      }
+    std::printf("CC eta = %d, n_c = n_B = %d (cond M^_BB %.3e): M^_cc(B, B) - I %.2e of bound; "
+                "K^_cc(B, B) off-diagonal %.2e of bound; diagonal vs dsygvd's lambda_c: max "
+                "relative %.3e (%.2e of bound)\n",
+                eta, nb, cond_m, m_ratio, off_ratio, diag_err, diag_ratio);
+    EXPECT_LE(m_ratio, 1.0);
+    EXPECT_LE(off_ratio, 1.0);
+    EXPECT_LE(diag_ratio, 1.0);
+  }
+}
+
+// V4, CC: T_cc = T_cb S with S = diag(I, Psi_c). With every boundary mode S is
+// square and invertible, the pencils congruent: CC's eigenvalues are CB's.
+// With n_c < n_B, span(T_cc) is inside span(T_cb) and inside CC's with more
+// boundary modes (the same Psi_c columns, a prefix): Rayleigh-Ritz
+// (Courant-Fischer) makes lambda_i(CC, n_c) >= lambda_i(CC, n_c') >=
+// lambda_i(CB) >= lambda_i(full). Tolerances: the dense solves' bounds of the
+// two problems compared and congruence_bounds (the CB matrices are common).
+// The frequency errors against the full model are printed: CC's accuracy.
+TEST_F(ReductionBases, CharacteristicConstraintRayleighRitz) {
+  const Model& md = model();
+  const int nb = md.p.n_boundary();
+  const int eta = 8;
+  const int lowest = 10;
+  const ReducedBasis& cb = basis("cb", eta);
+  const DenseEigen cb_eig = dense_eigen(cb.stiffness, cb.mass);
+  const Eigen::VectorXd cb_bound = solve_bounds(cb_eig, norm_inf(cb.stiffness), norm_inf(cb.mass));
+  Eigen::VectorXd previous, previous_bound;
+  for (int n_c : {2, 4, 8, 16, 32, nb}) {
+    const ReducedBasis cc = characteristic_constraint(md.bd.stiffness, md.bd.mass, md.p, eta, n_c);
+    ASSERT_EQ(cc.n_reduced(), eta + n_c);
+    const DenseEigen e = dense_eigen(cc.stiffness, cc.mass);
+    const Eigen::VectorXd bound = solve_bounds(e, norm_inf(cc.stiffness), norm_inf(cc.mass)) +
+                                  congruence_bounds(cb, congruence(cc, eta), e);
+    double below_cb = -std::numeric_limits<double>::infinity(), equal_cb = 0.0,
+           rise = -std::numeric_limits<double>::infinity(), err = 0.0;
+    for (int i = 0; i < eta + n_c; ++i)
+      below_cb = std::max(below_cb, (cb_eig.values(i) - e.values(i)) / (bound(i) + cb_bound(i)));
+    if (n_c == nb)
+      for (int i = 0; i < eta + n_c; ++i)
+        equal_cb =
+            std::max(equal_cb, std::abs(cb_eig.values(i) - e.values(i)) / (bound(i) + cb_bound(i)));
+    for (int i = 0; i < std::min(lowest, eta + n_c); ++i) {
+      err = std::max(err, std::sqrt(e.values(i) / full().values(i)) - 1.0);
+      if (previous.size() > i)
+        rise = std::max(rise, (e.values(i) - previous(i)) / (bound(i) + previous_bound(i)));
+    }
+    std::printf("CC eta = %d, n_c = %2d (r = %2d): lowest %d frequencies max relative error "
+                "%.3e vs full; (CB - CC) %.2e of bound%s; rise vs fewer boundary modes %.2e of "
+                "bound\n",
+                eta, n_c, eta + n_c, std::min(lowest, eta + n_c), err, below_cb,
+                n_c == nb ? (", |CB - CC| " + std::to_string(equal_cb) + " of bound").c_str() : "",
+                previous.size() > 0 ? rise : 0.0);
+    EXPECT_LE(below_cb, 1.0) << "n_c " << n_c << ": below CB's eigenvalues";
+    EXPECT_LE(equal_cb, 1.0) << "n_c " << n_c << ": not CB's eigenvalues";
+    if (previous.size() > 0) {
+      EXPECT_LE(rise, 1.0) << "n_c " << n_c << ": above the eigenvalues with fewer modes";
+    }
+    previous = e.values;
+    previous_bound = bound;
+  }
+  EXPECT_THROW(characteristic_constraint(md.bd.stiffness, md.bd.mass, md.p, eta, 0),
+               ReductionError);
+  EXPECT_THROW(characteristic_constraint(md.bd.stiffness, md.bd.mass, md.p, eta, nb + 1),
+               ReductionError);
 }
 
 } // namespace

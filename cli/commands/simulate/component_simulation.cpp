@@ -40,6 +40,7 @@ int simulate_component_case(const SimulateOptions& options, const ComponentCase&
   RubbingRunOptions run;
   run.method = options.method;
   run.modes = options.modes;
+  run.boundary_modes = options.boundary_modes;
   run.casing_modes = options.casing_modes;
   run.force = options.force;
   run.checkpoint = throw_if_interrupted;

@@ -67,12 +67,19 @@ SimulateCommand::SimulateCommand(CLI::App& app)
       ->check(case_file());
   m_command
       .add_option("--method", simulate.method,
-                  "full (reference), cb, ccm or guyan; macneal for a component case")
+                  "full (reference), cb, ccm or guyan; macneal, or cc (Craig-Bampton with "
+                  "the boundary in characteristic constraint modes), for a component case")
       ->capture_default_str()
-      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
+      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal", "cc"}));
   m_modes = m_command.add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
                 ->capture_default_str()
                 ->check(integer_in(0, 1000000000, modes_allowed));
+  m_command
+      .add_option("--boundary-modes", simulate.boundary_modes,
+                  "cc: the characteristic constraint modes kept of the boundary (n_c, 1 to the "
+                  "boundary dofs); --modes: its fixed-interface modes")
+      ->capture_default_str()
+      ->check(integer_in(0, 1000000000, "the characteristic constraint modes kept"));
   m_command.add_flag(
       "--full-field", simulate.full_field,
       "reduced methods: also write field.csv, every bladed-disk dof (u = T q) per history row");
@@ -170,8 +177,10 @@ int SimulateCommand::simulate(const Case& c, StagedOutput& output) const {
   const SimulateOptions& options = m_options;
   const bool full = options.method == "full";
   if (!full && options.method != "cb" && options.method != "ccm" && options.method != "guyan")
-    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
-                     "component cases), got '" + options.method + "'");
+    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal, "
+                     "cc: component cases), got '" + options.method + "'");
+  if (options.boundary_modes != 0)
+    throw UsageError("--boundary-modes: only for --method cc on a component case");
   if (full && options.full_field)
     throw UsageError(
         "--full-field: only for the reduced methods (the full run has every dof already)");

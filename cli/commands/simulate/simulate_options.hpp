@@ -14,6 +14,7 @@ struct SimulateOptions {
   std::string case_path;
   std::string method = "full";
   int modes = 0;
+  int boundary_modes = 0; ///< --boundary-modes: n_c of --method cc (component cases)
   std::string out = "out/simulate";
   bool force = false;
   bool full_field = false;
