@@ -11,10 +11,10 @@
 // coordinates u_B. A step t_n -> t_{n+1}: predict() at the rotor's trial
 // boundary u~_B (and, flexible, the casing's own free step), the contact
 // solve on [g; s] = [g~; s~] + W lambda with W = the rotor's plus
-// add_flexibility()'s, correct() with the solved multipliers (flexible:
-// the casing's correction), advance(), then gaps_at() the new level.
-// A flexible casing sums its own energy and works: E, W_ext and W_contact
-// of the integrator are the rotor's plus the casing's.
+// add_flexibility()'s (given to the solve as flexibility_rows()), correct() with the solved
+// multipliers (flexible: the casing's correction), advance(), then gaps_at() the new level. A
+// flexible casing sums its own energy and works: E, W_ext and W_contact of the integrator are the
+// rotor's plus the casing's.
 
 #include <Eigen/Core>
 
@@ -48,6 +48,9 @@ public:
   virtual bool flexible() const { return false; }
   /// w += the casing's share of the last prediction's W (flexible only).
   virtual void add_flexibility(Eigen::MatrixXd& /*w*/) const {}
+  /// H with the casing's share of the last prediction's W = dt^2 H H^T
+  /// (3 nc x m; flexible only), or nullptr when it has none (rigid, held).
+  virtual const Eigen::MatrixXd* flexibility_rows() const { return nullptr; }
   /// The casing's correction by the step's solved multipliers (flexible only).
   virtual void correct(const Eigen::VectorXd& /*lambda*/) {}
   /// The casing's level n -> n+1 (flexible only).

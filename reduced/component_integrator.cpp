@@ -42,13 +42,6 @@ double checked_dt(const ComponentIntegratorOptions& options) {
   return options.dt;
 }
 
-/// Whether a predicted gap is negative: the only steps whose solve reads W.
-bool closing(const Eigen::VectorXd& predicted) {
-  for (Eigen::Index k = 0; k < predicted.size(); k += 3)
-    if (predicted(k) < 0.0) return true;
-  return false;
-}
-
 } // namespace
 
 ComponentIntegrator::ComponentIntegrator(const ReducedBasis& basis, const RigidCasing& casing,
@@ -132,11 +125,13 @@ void ComponentIntegrator::init(const ReducedBasis& basis,
   else
     m_rotor = std::make_unique<MassCarryingBoundaryPart>(basis, options, m_casing->rows());
   m_contact->set_contact_matrix(m_rotor->contact_matrix());
-  if (m_casing->flexible()) m_w_rotor = m_contact->contact_matrix();
   m_lambda.setZero(3 * m_nc);
 }
 
 void ComponentIntegrator::solve_contact(StepReport& report) {
+  // The flexible casing's share dt^2 H H^T of this prediction's W (none
+  // while it is held at t = 0).
+  if (m_coulomb != nullptr) m_coulomb->set_flexibility(m_casing->flexibility_rows(), m_dt * m_dt);
   if (m_boundary_rank == 0) return m_contact->solve(m_casing->prediction(), m_n + 1, report);
   try {
     m_contact->solve(m_casing->prediction(), m_n + 1, report);
@@ -189,11 +184,6 @@ StepReport ComponentIntegrator::step() {
   const double t_next = (m_n + 1) * m_dt;
   m_rotor->predict(m_lambda, time(), t_next);
   m_casing->predict(m_rotor->trial_boundary(), m_rotor->boundary(), time(), t_next);
-  if (m_coulomb != nullptr && closing(m_casing->prediction())) {
-    m_w_step = m_w_rotor;
-    m_casing->add_flexibility(m_w_step);
-    m_coulomb->replace_contact_matrix(m_w_step);
-  }
   solve_contact(report);
   const Eigen::VectorXd& solved = m_contact->lambda_next();
   m_rotor->correct(solved);

@@ -42,8 +42,8 @@
 //     rotor's);
 //   the Coulomb contact solve (coulomb_node_solve.hpp): [g; s] = [g~; s~] +
 //     W lambda on the closing contacts, W from the rotor part (plus the
-//     flexible casing's, formed on the steps where a contact closes: the
-//     only ones whose solve reads W).
+//     flexible casing's dt^2 H H^T, given as H and formed on the closed
+//     contacts only: flexibility_rows(), CoulombNodeSolve::set_flexibility).
 // A step: the rotor part predicts (with the multipliers of the step that
 // produced x_n), the casing part predicts [g~; s~] at its u~_B, the contact
 // solve finds lambda, the rotor part takes the correction, the works are
@@ -184,7 +184,6 @@ private:
   double m_initial_bar_energy = 0.0;    ///< the bars' elastic energy at the start (MacNeal in contact at t = 0)
   std::unique_ptr<ComponentCasingPart> m_casing;
   CoulombNodeSolve* m_coulomb = nullptr; ///< m_contact when W changes every step (flexible casing)
-  Eigen::MatrixXd m_w_rotor, m_w_step;  ///< flexible casing: the rotor's W, symmetrised; the step's
   std::unique_ptr<ComponentRotorPart> m_rotor;
   Eigen::VectorXd m_lambda; ///< the multipliers of the step that produced x_n
   double m_initial_energy = 0.0;

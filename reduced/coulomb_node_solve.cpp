@@ -27,8 +27,20 @@ void CoulombNodeSolve::set_contact_matrix(const Eigen::MatrixXd& w) {
   m_state.assign(m_nc, ReducedContactState::open);
 }
 
-void CoulombNodeSolve::replace_contact_matrix(const Eigen::MatrixXd& w) {
-  m_w = 0.5 * (w + w.transpose());
+void CoulombNodeSolve::set_flexibility(const Eigen::MatrixXd* h, double scale) {
+  m_h = h != nullptr && h->cols() > 0 ? h : nullptr;
+  m_h_scale = scale;
+}
+
+Eigen::VectorXd CoulombNodeSolve::certificate_point(const Eigen::VectorXd& predicted,
+                                                    const std::vector<int>& active) const {
+  // y = predicted + (W + scale h h^T) lambda, lambda zero off the active
+  // contacts: W's active columns, and h (h_A^T lambda_A) = h m_z.
+  Eigen::VectorXd y = predicted;
+  for (size_t i = 0; i < active.size(); ++i)
+    y.noalias() += m_w.middleCols(3 * active[i], 3) * m_lambda_next.segment(3 * active[i], 3);
+  y.noalias() += m_h_scale * (*m_h * m_z);
+  return y;
 }
 
 void CoulombNodeSolve::start() {
@@ -80,6 +92,14 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
         for (int j = 0; j < na; ++j)
           m_wa.block(3 * i, 3 * j, 3, 3) = m_w.block(3 * active[i], 3 * active[j], 3, 3);
       }
+      if (m_h != nullptr) {
+        m_ha.resize(3 * na, m_h->cols());
+        for (int i = 0; i < na; ++i)
+          m_ha.middleRows(3 * i, 3) = m_h->middleRows(3 * active[i], 3);
+        // Symmetric to the last bit, as the whole W was (its symmetrised copy).
+        const Eigen::MatrixXd share = m_h_scale * (m_ha * m_ha.transpose());
+        m_wa += 0.5 * (share + share.transpose());
+      }
       const CoulombGaussSeidelReport r = m_solver.solve(m_wa, m_pa, m_la);
       m_sweeps += r.sweeps;
       if (!r.converged())
@@ -94,11 +114,13 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
         m_state[active[i]] = m_solver.states()[i];
       }
       bool grown = false;
+      if (m_h != nullptr) m_z.noalias() = m_ha.transpose() * m_la;
       for (int c = 0; c < m_nc; ++c) {
         if (in[c]) continue;
         double g = predicted(3 * c);
         for (int i = 0; i < na; ++i)
           g += m_w.row(3 * c).segment(3 * active[i], 3).dot(m_la.segment(3 * i, 3));
+        if (m_h != nullptr) g += m_h_scale * m_h->row(3 * c).dot(m_z);
         if (g < 0.0) {
           active.push_back(c);
           in[c] = 1;
@@ -108,7 +130,10 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
       if (!grown) break;
     }
     const ReducedCoulombCertificate cert =
-        reduced_coulomb_certificate(m_w, predicted, 2, m_mu, m_lambda_next, m_state);
+        m_h == nullptr
+            ? reduced_coulomb_certificate(m_w, predicted, 2, m_mu, m_lambda_next, m_state)
+            : reduced_coulomb_certificate_of(certificate_point(predicted, active), 2, m_mu,
+                                             m_lambda_next, m_state);
     report.max_penetration = cert.max_penetration;
     report.min_lambda = cert.min_normal;
     report.max_complementarity = cert.max_complementarity;

@@ -42,9 +42,13 @@ public:
   /// W of every step's problem (3 nc square), symmetrised here.
   void set_contact_matrix(const Eigen::MatrixXd& w) override;
   const Eigen::MatrixXd& contact_matrix() const override { return m_w; }
-  /// The step's W when it changes during a run (the flexible casing's),
-  /// symmetrised; the multipliers and states kept (the warm start).
-  void replace_contact_matrix(const Eigen::MatrixXd& w);
+  /// The step's W = W + scale h h^T (the flexible casing's share, h 3 nc x
+  /// m, read at the next solve; nullptr: none), never formed whole: the
+  /// solve forms W's blocks on its active contacts, the growth test and the
+  /// certificate W lambda from the active columns (3 nc x 3 |A| + m terms
+  /// instead of the (3 nc)^2 m rank update). The multipliers and states
+  /// are kept (the warm start).
+  void set_flexibility(const Eigen::MatrixXd* h, double scale);
 
   /// Before the first step: every multiplier zero, every contact open, no work, no sweeps.
   void start() override;
@@ -69,7 +73,16 @@ private:
   double m_dt;
   double m_mu;
   bool m_subset;
-  Eigen::MatrixXd m_w;        ///< W, 3 nc square
+  /// y = predicted + W lambda for the certificate with the casing's share
+  /// (m_z: h_A^T lambda_A of the final active set).
+  Eigen::VectorXd certificate_point(const Eigen::VectorXd& predicted,
+                                    const std::vector<int>& active) const;
+
+  Eigen::MatrixXd m_w;                  ///< W, 3 nc square (the rotor's with a flexible casing)
+  const Eigen::MatrixXd* m_h = nullptr; ///< the casing's rows h of W's share scale h h^T
+  double m_h_scale = 0.0;
+  Eigen::MatrixXd m_ha;       ///< h's rows on the active contacts (3 |A| x m)
+  Eigen::VectorXd m_z;        ///< h_A^T lambda_A (m)
   Eigen::MatrixXd m_wa;       ///< W on the contacts of the step's active set
   Eigen::VectorXd m_pa, m_la; ///< [g~; s~] and lambda on them
   Eigen::VectorXd m_lambda_next;

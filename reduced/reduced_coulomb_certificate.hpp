@@ -57,4 +57,11 @@ reduced_coulomb_certificate(const Eigen::Ref<const Eigen::MatrixXd>& w,
                             const Eigen::Ref<const Eigen::VectorXd>& lambda,
                             const std::vector<ReducedContactState>& state);
 
+/// The same from y = predicted + W lambda formed by the caller (a W never
+/// formed whole: coulomb_node_solve.hpp); the same checks, on y's size.
+ReducedCoulombCertificate
+reduced_coulomb_certificate_of(const Eigen::Ref<const Eigen::VectorXd>& y, int d, double mu,
+                               const Eigen::Ref<const Eigen::VectorXd>& lambda,
+                               const std::vector<ReducedContactState>& state);
+
 } // namespace rsi

@@ -48,7 +48,9 @@
 // + (0, r Omega dt) at the rotor's trial boundary and the casing's free step
 // p~ = 2 p_n - p_{n-1} + dt^2 (s_n Phi^T F - omega^2 p_n). The casing's
 // share of W, dt^2 H H^T (its inverse mass is I in p), changes every step
-// (the tips move over the casing): add_flexibility().
+// (the tips move over the casing): flexibility_rows() gives H to the
+// contact solve, which forms the closed contacts' part of it only
+// (coulomb_node_solve.hpp); add_flexibility() forms the whole.
 // With a massless rotor boundary (MacNeal) the solved lambda is the
 // rotor's lambda_{n+1} in static balance with u_B^{n+1} and the casing's
 // lambda_n of the step above: the gap at t_{n+1} is closed in both parts
@@ -101,6 +103,8 @@ public:
   /// w += dt^2 H H^T of the last prediction (w symmetric on entry; only
   /// its lower triangle is read).
   void add_flexibility(Eigen::MatrixXd& w) const override;
+  /// &H, nullptr while the casing is held (t = 0).
+  const Eigen::MatrixXd* flexibility_rows() const override { return m_held ? nullptr : &m_h; }
   /// p_{n+1} = p~ + dt^2 H^T lambda; the step's works.
   void correct(const Eigen::VectorXd& lambda) override;
   void advance() override;

@@ -267,6 +267,56 @@ TEST(LinerContactSolve, StiffBarsAreTheRigidCasing) {
   }
 }
 
+// The flexible casing's share of W, scale h h^T (reduced/solid_casing_part),
+// given to CoulombNodeSolve as h (set_flexibility) and never formed whole,
+// against the same W formed and set whole: the same contact states at every
+// step, and multipliers that differ by what the two W's rounding allows.
+// The two W differ entrywise by at most (m + 2) eps (W_rotor + |s| |h| |h|^T)
+// (the product's m terms, the sum, the symmetrisation) and each solve stops
+// at a relative change of 1e-14 (CoulombGaussSeidelOptions): |d lambda| <=
+// cond(W) ((m + 2) eps + 1e-14) |lambda|, a factor 10 for the friction's
+// coupling (as above). The certificate of the never-formed path, evaluated
+// on the formed W, is at round-off (the solve's stopping rule).
+TEST(CoulombNodeSolve, CasingShareNeverFormedIsTheFormedW) {
+  const int nc = 8, m = 5;
+  const double scale = 0.3;
+  const Eigen::MatrixXd w_rotor = dense_w(nc, 41, 1.0);
+  std::srand(43);
+  const Eigen::MatrixXd h = Eigen::MatrixXd::Random(3 * nc, m);
+  const Eigen::MatrixXd w_full = w_rotor + scale * h * h.transpose();
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(w_full).eigenvalues();
+  const double cond = ev.maxCoeff() / ev.minCoeff();
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (double mu : {0.0, 0.3}) {
+    CoulombNodeSolve formed(nc, 1e-3, mu, CoulombGaussSeidelOptions{}, true);
+    CoulombNodeSolve shared(nc, 1e-3, mu, CoulombGaussSeidelOptions{}, true);
+    formed.set_contact_matrix(w_full);
+    shared.set_contact_matrix(w_rotor);
+    shared.set_flexibility(&h, scale);
+    std::srand(47);
+    double worst = 0.0;
+    for (int step = 1; step <= 30; ++step) {
+      Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+      for (int c = 0; c < nc; c += 2) predicted(3 * c) -= 0.03; // half of them closing
+      StepReport a, b;
+      formed.solve(predicted, step, a);
+      shared.solve(predicted, step, b);
+      ASSERT_EQ(formed.states(), shared.states()) << "mu " << mu << " step " << step;
+      const double size = formed.lambda_next().cwiseAbs().maxCoeff();
+      const double diff = (formed.lambda_next() - shared.lambda_next()).cwiseAbs().maxCoeff();
+      worst = std::max(worst, diff / (10.0 * cond * ((m + 2) * eps + 1e-14) * size));
+      EXPECT_LE(diff, 10.0 * cond * ((m + 2) * eps + 1e-14) * size) << "mu " << mu << " step " << step;
+      const ReducedCoulombCertificate cert = reduced_coulomb_certificate(
+          w_full, predicted, 2, mu, shared.lambda_next(), shared.states());
+      EXPECT_LE(cert.max_cone_violation, 1e-12 * size);
+      EXPECT_LE(cert.max_penetration, 1e-12 * predicted.cwiseAbs().maxCoeff());
+      EXPECT_EQ(b.n_stick + b.n_slip, a.n_stick + a.n_slip);
+    }
+    std::printf("mu %.1f: cond(W) %.2f, multipliers within %.2e of the bound over 30 steps\n", mu,
+                cond, worst);
+  }
+}
+
 /// 64 sectors x 4 rows over [-10, 10] (r dtheta = 24.5, dz = 5; centres at
 /// z = -7.5, -2.5, 2.5, 7.5): a patch of 60 x 8 covers 2 or 3 sectors and
 /// 1 or 2 rows.
