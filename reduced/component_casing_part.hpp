@@ -44,7 +44,7 @@ public:
                        double t_next) = 0;
   /// The last prediction, 3 nc entries (g~, s~_t1, s~_t2 per contact).
   virtual const Eigen::VectorXd& prediction() const = 0;
-  /// Whether the step's W depends on the casing (then add_flexibility()).
+  /// Whether the step's W depends on the casing (flexibility_rows()).
   virtual bool flexible() const { return false; }
   /// w += the casing's share of the last prediction's W (flexible only).
   virtual void add_flexibility(Eigen::MatrixXd& /*w*/) const {}

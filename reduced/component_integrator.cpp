@@ -71,7 +71,10 @@ void ComponentIntegrator::init(const ReducedBasis& basis,
                                const ComponentIntegratorOptions& options) {
   m_dt = options.dt;
   m_r = basis.n_reduced();
-  m_boundary_rank = static_cast<int>(basis.boundary_shapes.cols());
+  // With every boundary mode (n_c = n_B) W has CB's rank: no note.
+  m_boundary_rank = basis.boundary_shapes.cols() < basis.boundary_shapes.rows()
+                        ? static_cast<int>(basis.boundary_shapes.cols())
+                        : 0;
   const int nb = basis.n_boundary();
   for (int b : basis.boundary_position)
     if (b < 0 || b >= m_r)
@@ -132,18 +135,23 @@ void ComponentIntegrator::solve_contact(StepReport& report) {
   // The flexible casing's share dt^2 H H^T of this prediction's W (none
   // while it is held at t = 0).
   if (m_coulomb != nullptr) m_coulomb->set_flexibility(m_casing->flexibility_rows(), m_dt * m_dt);
-  if (m_boundary_rank == 0) return m_contact->solve(m_casing->prediction(), m_n + 1, report);
+  if (m_boundary_rank == 0 || m_liner != nullptr)
+    return m_contact->solve(m_casing->prediction(), m_n + 1, report);
   try {
     m_contact->solve(m_casing->prediction(), m_n + 1, report);
   } catch (const ComponentIntegrationError& e) {
-    // u_B = Psi_c q_c: B_q = B_B [0 Psi_c] has rank <= n_c, and so has W.
-    // More closed contact directions than n_c make W's active block
-    // singular, its multipliers not unique: the boundary is too coarse.
-    throw ComponentIntegrationError(
-        std::string(e.what()) + " (the boundary in " + std::to_string(m_boundary_rank) +
-            " characteristic constraint modes: W has rank at most " +
-            std::to_string(m_boundary_rank) + ", fewer than the closed contacts may need)",
-        remedied_by({Remedy::more_boundary_modes}));
+    // u_B = Psi_c q_c: B_q = B_B [0 Psi_c] has rank <= n_c, and so has the
+    // rotor's share of W (a flexible casing adds dt^2 H H^T, rank <= its
+    // modes). More closed contact directions than that make W's active
+    // block singular, its multipliers not unique: the boundary too coarse.
+    FailureAdvice advice = e.advice();
+    advice.remedies.insert(advice.remedies.begin(), Remedy::more_boundary_modes);
+    throw ComponentIntegrationError(std::string(e.what()) + " (the boundary in " +
+                                        std::to_string(m_boundary_rank) +
+                                        " characteristic constraint modes: the rotor's share of "
+                                        "W has rank at most " +
+                                        std::to_string(m_boundary_rank) + ")",
+                                    advice);
   }
 }
 

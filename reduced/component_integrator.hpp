@@ -6,10 +6,11 @@
 // couples the 2D bladed disk to a full casing).
 //
 // Model. q = the reduced coordinates of a ReducedBasis (CB, CCM, Guyan or
-// MacNeal; every one keeps the boundary dofs u_B as coordinates, at
-// ReducedBasis::boundary_position). The contact rows of node c are
+// MacNeal keep the boundary dofs u_B as coordinates, at
+// ReducedBasis::boundary_position; characteristic constraint modes give
+// u_B = Psi_c q_c). The contact rows of node c are
 // B_c = F_c P_c (F_c the rigid casing's frame rows e_n, e_t1, e_t2; P_c
-// picks its ux, uy, uz from q), B = [B_1; ...; B_nc] (3 nc x r), and
+// picks its ux, uy, uz from q, or their rows of Psi_c), B = [B_1; ...; B_nc] (3 nc x r), and
 //   M^ q'' + C^ q' + K^ q = B^T lambda + f(t),
 // lambda = (lambda_n, lambda_t1, lambda_t2) per contact [force], C^ =
 // diag(c) the modal damping of modal_damping.hpp (zero on the boundary),
@@ -159,7 +160,9 @@ public:
   /// f(t), r entries (zeros without a force).
   Eigen::VectorXd external_force(double t) const { return m_rotor->external_force(t); }
   double damping_work() const override { return m_rotor->damping_work(); }
-  /// W of every step's contact problem (3 nc square; constant over a run).
+  /// W of every step's contact problem (3 nc square; constant over a run),
+  /// the rotor's share only against a flexible casing (whose dt^2 H H^T
+  /// changes every step: CoulombNodeSolve::set_flexibility).
   const Eigen::MatrixXd& contact_matrix() const { return m_contact->contact_matrix(); }
   /// Gauss-Seidel sweeps summed over the run.
   long sweeps() const { return m_contact->sweeps(); }

@@ -4,7 +4,8 @@
 // contact node three rows (n, t1, t2), the step's problem
 //   [g; s] = [g~; s~] + W lambda
 // with [g~; s~] the prediction of the casing part (rigid_casing_part.hpp)
-// and W (3 nc square, constant over a run) handed by the rotor part: an
+// and W (3 nc square, constant over a run; with a flexible casing plus
+// its share dt^2 H H^T of each step, set_flexibility) handed by the rotor part: an
 // inverse mass times dt^2 for a mass-carrying boundary, a compliance for a
 // massless one (mass_carrying_boundary_part.hpp, massless_boundary_part.hpp);
 // it is used symmetrised, (W + W^T)/2. lambda = (lambda_n, lambda_t1,

@@ -73,7 +73,8 @@ const char* remedy_words(Remedy remedy) {
   case Remedy::smaller_step_safety_or_friction:
     return "; use a smaller rubbing.step_safety or rubbing.friction_coefficient";
   case Remedy::more_boundary_modes:
-    return "; keep more characteristic constraint modes (--boundary-modes) or run --method cb";
+    return "; keep more characteristic constraint modes (--boundary-modes; a campaign entry's "
+           "modes) or run --method cb";
   case Remedy::thicker_liner_or_larger_clearance:
     return "; the liner model (bars in front of a rigid backing) ends there: give a thicker "
            "liner (rubbing.liner.thickness), a harder one (rubbing.liner.yield_stress), or a "

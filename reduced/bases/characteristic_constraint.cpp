@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
 #include "craig_bampton.hpp"
@@ -20,11 +21,17 @@ ReducedBasis characteristic_constraint(const Eigen::SparseMatrix<double>& stiffn
   const auto start = std::chrono::steady_clock::now();
   ReducedBasis basis = craig_bampton(stiffness, mass, p, eta);
   // CB's q = (u_eta, u_B): the boundary block is its last n_B rows/columns.
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> boundary(
-      basis.stiffness.bottomRightCorner(n_b, n_b), basis.mass.bottomRightCorner(n_b, n_b));
-  if (boundary.info() != Eigen::Success)
+  // Eigen's generalized solver does not report a failed Cholesky of M^_BB:
+  // checked here first.
+  const Eigen::MatrixXd m_bb = basis.mass.bottomRightCorner(n_b, n_b);
+  if (Eigen::LLT<Eigen::MatrixXd>(m_bb).info() != Eigen::Success)
     throw ReductionError("characteristic constraint modes: the boundary's Guyan mass M^_BB is "
                          "not positive definite (a boundary dof without mass)");
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> boundary(
+      basis.stiffness.bottomRightCorner(n_b, n_b), m_bb);
+  if (boundary.info() != Eigen::Success)
+    throw ReductionError("characteristic constraint modes: the boundary's eigenproblem "
+                         "(K^_BB, M^_BB) did not converge");
   const Eigen::MatrixXd psi_c = boundary.eigenvectors().leftCols(n_c);
   const int r = eta + n_c;
   Eigen::MatrixXd s = Eigen::MatrixXd::Zero(eta + n_b, r);

@@ -12,8 +12,8 @@
 // diag(omega_i^2, lambda_c); M^'s boundary block is I.
 // The boundary is no longer a set of coordinates of q
 // (ReducedBasis::boundary_position is empty, boundary_shapes = Psi_c): the
-// basis is for modal comparisons; the reduced time integration reads u_B
-// as coordinates of q and does not take it.
+// component integrator reads u_B = Psi_c q_c (component_rotor_part.hpp);
+// the paper's 2D integrator keeps u_B as coordinates and does not take it.
 // Valid range: 0 <= eta <= n_I, 1 <= n_c <= n_B (ReductionError otherwise).
 
 #include <Eigen/SparseCore>

@@ -1,6 +1,7 @@
 #pragma once
 // A reduction basis of the bladed disk: u = T q, with the boundary dofs
-// kept as physical coordinates inside q (SPEC §3), and the reduced matrices
+// kept as physical coordinates inside q (SPEC §3; characteristic constraint
+// modes: u_B = Psi_c q_c instead, boundary_shapes), and the reduced matrices
 // K^ = T^T K T, M^ = T^T M T (paper eq. 6); MacNeal's M^ is the kept
 // modes' mass alone, zero on the boundary (macneal.hpp).
 

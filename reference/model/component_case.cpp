@@ -396,6 +396,15 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
                  "only for \"method\": \"cc\" (the fixed-interface modes under its "
                  "characteristic constraint modes); this run's method is \"" + item.method + "\"");
       run.finish();
+      // cc runs are named cc-n_c (runs/cc-n_c): one n_c once in the campaign.
+      if (item.method == "cc")
+        for (const RubbingRuns& earlier : out.campaign)
+          if (earlier.method == "cc")
+            for (int n_c : item.modes)
+              if (std::find(earlier.modes.begin(), earlier.modes.end(), n_c) != earlier.modes.end())
+                run.fail(run.full("modes"), "n_c = " + std::to_string(n_c) +
+                                                " is in an earlier cc entry already (each cc run "
+                                                "is named cc-n_c: one n_c once)");
       out.campaign.push_back(item);
     }
     campaign.claim("full_revolutions");

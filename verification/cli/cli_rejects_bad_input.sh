@@ -438,6 +438,7 @@ rubbing_variant no-campaign "{$rub, \"friction_coefficient\": 0.1}"
 rubbing_variant campaign "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"macneal\", \"modes\": [1]}]}}"
 rubbing_variant campaign-method "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"guyan\", \"modes\": [1]}]}}"
 rubbing_variant campaign-cc "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cc\", \"modes\": [1]}]}}"
+rubbing_variant campaign-cc-twice "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cc\", \"modes\": [1], \"fixed_interface_modes\": 0}, {\"method\": \"cc\", \"modes\": [1, 2], \"fixed_interface_modes\": 1}]}}"
 rubbing_variant campaign-cb-fixed "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cb\", \"modes\": [1], \"fixed_interface_modes\": 2}]}}"
 # rubbing.liner: bad values refused naming the key and the range.
 lin='"thickness": 1, "young_modulus": 1000, "hardening_modulus": 0'
@@ -483,6 +484,7 @@ expect 2 "--full-field: only for the paper's case" -- "$rsi" simulate "$work/rub
 expect 2 "key 'rubbing.campaign.runs[0].fixed_interface_modes': missing (required)" -- "$rsi" campaign "$work/rubbing-campaign-cc.json" --out "$work/out"
 expect 2 "key 'rubbing.campaign.runs[0].fixed_interface_modes': only for \"method\": \"cc\"" -- "$rsi" campaign "$work/rubbing-campaign-cb-fixed.json" --out "$work/out"
 expect 2 "--boundary-modes: characteristic constraint modes: 1 to 3 boundary modes (the boundary dofs), got 0" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cc --modes 1 --out "$work/out"
+expect 2 "key 'rubbing.campaign.runs[1].modes': n_c = 1 is in an earlier cc entry already" -- "$rsi" campaign "$work/rubbing-campaign-cc-twice.json" --out "$work/out"
 expect 2 "--boundary-modes: only for --method cc (characteristic constraint modes)" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cb --modes 1 --boundary-modes 2 --out "$work/out"
 
 # Matrix Market folders in rsi export's layout (the good one written by rsi export).

@@ -310,11 +310,47 @@ TEST(CoulombNodeSolve, CasingShareNeverFormedIsTheFormedW) {
           w_full, predicted, 2, mu, shared.lambda_next(), shared.states());
       EXPECT_LE(cert.max_cone_violation, 1e-12 * size);
       EXPECT_LE(cert.max_penetration, 1e-12 * predicted.cwiseAbs().maxCoeff());
-      EXPECT_EQ(b.n_stick + b.n_slip, a.n_stick + a.n_slip);
+      // The solve's own certificate (y = g~ + W lambda from W's active
+      // columns and h h_A^T lambda_A) against the one on the formed W: y
+      // summed in another order, |dy| <= (3 nc + m) eps (|W| + s|h||h|^T)|lambda|;
+      // penetration and g lambda_n move by at most that (times |lambda_n|).
+      const double dy = (3 * nc + m) * eps *
+                        ((w_rotor.cwiseAbs() + scale * h.cwiseAbs() * h.cwiseAbs().transpose()) *
+                         shared.lambda_next().cwiseAbs())
+                            .maxCoeff();
+      EXPECT_LE(std::abs(b.max_penetration - cert.max_penetration), dy);
+      EXPECT_LE(std::abs(b.max_complementarity - cert.max_complementarity), dy * size);
     }
     std::printf("mu %.1f: cond(W) %.2f, multipliers within %.2e of the bound over 30 steps\n", mu,
                 cond, worst);
   }
+}
+
+// The growth of the active set through the casing's share alone: W_rotor =
+// I, h = e_n0 - e_n1 (scale 1), so W_n1n0 = -1: contact 0 closing (g~ = -1)
+// pulls contact 1 (g~ = 0.2) shut. Exact (mu = 0): [2 -1; -1 2] lambda =
+// [1; -0.2], lambda_n = (0.6, 0.2), both closed. Gauss-Seidel on this W
+// contracts by rho = 1/4 a sweep: after a last change <= 1e-14 |lambda|
+// (its stopping rule) the error is <= 1e-14 rho/(1 - rho) |lambda| < 1e-14,
+// plus a few eps of rounding.
+TEST(CoulombNodeSolve, CasingShareClosesAContactOutsideTheClosingOnes) {
+  const int nc = 2;
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(3 * nc, 1);
+  h(0, 0) = 1.0;
+  h(3, 0) = -1.0;
+  CoulombNodeSolve solve(nc, 1e-3, 0.0, CoulombGaussSeidelOptions{}, true);
+  solve.set_contact_matrix(Eigen::MatrixXd::Identity(3 * nc, 3 * nc));
+  solve.set_flexibility(&h, 1.0);
+  Eigen::VectorXd predicted = Eigen::VectorXd::Zero(3 * nc);
+  predicted(0) = -1.0;
+  predicted(3) = 0.2;
+  StepReport report;
+  solve.solve(predicted, 1, report);
+  const double tol = 1e-14 + 8 * std::numeric_limits<double>::epsilon();
+  EXPECT_NEAR(solve.lambda_next()(0), 0.6, tol);
+  EXPECT_NEAR(solve.lambda_next()(3), 0.2, tol);
+  EXPECT_NE(solve.states()[1], ReducedContactState::open);
+  EXPECT_LE(report.max_penetration, 2 * tol);
 }
 
 /// 64 sectors x 4 rows over [-10, 10] (r dtheta = 24.5, dz = 5; centres at

@@ -71,7 +71,7 @@ SimulateCommand::SimulateCommand(CLI::App& app)
                   "the boundary in characteristic constraint modes), for a component case")
       ->capture_default_str()
       ->check(one_of({"full", "cb", "ccm", "guyan", "macneal", "cc"}));
-  m_modes = m_command.add_option("--modes", simulate.modes, "modes kept by cb (eta) or ccm (psi)")
+  m_modes = m_command.add_option("--modes", simulate.modes, "modes kept by cb and cc (eta) or ccm, macneal (psi)")
                 ->capture_default_str()
                 ->check(integer_in(0, 1000000000, modes_allowed));
   m_command
@@ -167,6 +167,8 @@ int SimulateCommand::simulate(const ComponentCase& c, StagedOutput& output) cons
   if (options.time_step != "case" || options.selection != "lowest")
     throw UsageError("--time-step, --selection: only for the paper's case; a component case "
                      "sets its steps in its rubbing object and keeps the lowest modes");
+  if (options.boundary_modes != 0 && options.method != "cc")
+    throw UsageError("--boundary-modes: only for --method cc (characteristic constraint modes)");
   if (options.casing_modes != 0 && !(c.rubbing && c.rubbing->casing))
     throw UsageError("--casing-modes: only for the paper's case and a component case with a "
                      "flexible casing (rubbing.casing); this one's casing is rigid");
