@@ -14,7 +14,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "characteristic_constraint.hpp"
 #include "component_integrator.hpp"
 #include "component_run.hpp"
 #include "full_order_run.hpp"
@@ -245,13 +244,9 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<ReducedBasis> own;
   const Component& component = model.component();
-  if (options.basis == nullptr && options.method == "cc")
-    own = characteristic_constraint(component.stiffness, component.mass,
-                                    make_partition(component.n_dofs(), component.boundary),
-                                    options.modes, options.boundary_modes);
-  else if (options.basis == nullptr)
+  if (options.basis == nullptr)
     own = reduce(component.stiffness, component.mass, component.boundary, options.method,
-                 options.modes);
+                 options.modes, options.boundary_modes);
   const ReducedBasis& basis = options.basis != nullptr ? *options.basis : *own;
   const auto run_start = std::chrono::steady_clock::now();
   const double basis_seconds = std::chrono::duration<double>(run_start - t0).count();
@@ -410,8 +405,6 @@ RubbingRun run_rubbing(const RubbingModel& model, const RubbingRunOptions& optio
       options.method != "guyan" && options.method != "macneal" && options.method != "cc")
     throw std::invalid_argument("--method: must be full, cb, ccm, guyan, macneal or cc, got '" +
                                 options.method + "'");
-  if (options.method != "cc" && options.boundary_modes != 0)
-    throw CaseError("--boundary-modes: only for --method cc (characteristic constraint modes)");
   const double revolutions = options.revolutions > 0.0 ? options.revolutions : model.setup().revolutions;
   const std::int64_t n_samples = checked_samples(model, options, revolutions);
   if (options.method == "full")

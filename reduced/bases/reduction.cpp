@@ -1,8 +1,11 @@
 #include "reduction.hpp"
 
 #include <chrono>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "characteristic_constraint.hpp"
 #include "craig_bampton.hpp"
 #include "craig_chang_martinez.hpp"
 #include "guyan.hpp"
@@ -26,6 +29,19 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
   }
   throw ReductionError("must be full, cb, ccm, guyan or macneal, got '" + method + "'",
                        failed_input(FailedInput::method));
+}
+
+ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
+                    const Eigen::SparseMatrix<double>& mass, const std::vector<int>& boundary,
+                    const std::string& method, int modes, int boundary_modes) {
+  if (method == "cc")
+    return characteristic_constraint(stiffness, mass,
+                                     make_partition(static_cast<int>(stiffness.rows()), boundary),
+                                     modes, boundary_modes);
+  if (boundary_modes != 0)
+    throw std::invalid_argument("reduce: boundary_modes = " + std::to_string(boundary_modes) +
+                                " only for method cc, got '" + method + "'");
+  return reduce(stiffness, mass, boundary, method, modes);
 }
 
 ReducedBasis reduce_bladed_disk(const BladedDisk& bd, const std::string& method, int modes) {

@@ -21,6 +21,14 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
                     const Eigen::SparseMatrix<double>& mass, const std::vector<int>& boundary,
                     const std::string& method, int modes);
 
+/// reduce(), and "cc" (characteristic_constraint.hpp: modes = eta,
+/// boundary_modes = n_c): for the component integrator, which reads u_B
+/// through a basis's boundary_shapes. std::invalid_argument for
+/// boundary_modes != 0 with another method.
+ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
+                    const Eigen::SparseMatrix<double>& mass, const std::vector<int>& boundary,
+                    const std::string& method, int modes, int boundary_modes);
+
 /// reduce() of the bladed disk with its tip boundary.
 ReducedBasis reduce_bladed_disk(const BladedDisk& bladed_disk, const std::string& method,
                                 int modes);
