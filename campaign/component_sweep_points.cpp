@@ -161,7 +161,8 @@ public:
                : RubbingIndicatorAccumulator(transient, interval);
     RubbingRunOptions options;
     options.method = r.run.method;
-    options.modes = r.run.modes;
+    options.modes = r.run.method == "cc" ? r.run.fixed_interface_modes : r.run.modes;
+    options.boundary_modes = r.run.method == "cc" ? r.run.modes : 0;
     options.revolutions = m_sweep.revolutions;
     options.revolutions_key = "sweep.revolutions";
     options.rotation_speed = speed;
@@ -274,6 +275,7 @@ public:
                               {"basis_s", r.basis_seconds},
                               {"coordinates", r.coordinates},
                               {"natural_frequencies_hz", r.frequencies_hz}};
+    if (r.run.method == "cc") summary["fixed_interface_modes"] = r.run.fixed_interface_modes;
     if (r.subspace) {
       // The subspace once (basis_s), then a reduction inside it at each speed.
       summary["subspace_coordinates"] = r.subspace->n_subspace();
@@ -460,6 +462,8 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
     PreparedRun& r = runs[j];
     r.run = sweep.runs[j];
     r.coordinates = model.component().n_dofs();
+    if (rotation && r.run.method == "cc")
+      throw std::invalid_argument(where + "cc has no speed subspace (rotation effects)");
     if (rotation && r.run.method != "full") {
       // One subspace over the speeds: the method's bases at 0 and the fit
       // speeds; each speed's basis reduced inside it (speed_subspace.hpp).
@@ -481,8 +485,10 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
         casing = std::make_shared<const CasingBasis>(rubbing_casing_basis(model, 0));
       r.casing = casing;
       try {
+        const bool cc = r.run.method == "cc";
         r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
-                         r.run.method, r.run.modes);
+                         r.run.method, cc ? r.run.fixed_interface_modes : r.run.modes,
+                         cc ? r.run.modes : 0);
       } catch (const ReductionError& e) {
         throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
       }

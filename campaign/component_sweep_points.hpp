@@ -2,7 +2,8 @@
 // The sweep of a component case (a 3D blade rubbing on its rigid casing,
 // rubbing_run.hpp): the rubbing run at each speed of its "sweep" object
 // (or the caller's speeds), over sweep.revolutions, for each of its runs
-// (full, or a reduced method and mode count: cb, ccm, guyan, macneal);
+// (full, or a reduced method and mode count: cb, ccm, guyan, macneal; cc
+// with its n_c as the count, its eta a run's fixed_interface_modes);
 // each history reduced to a row of indicators (sweep/rubbing_indicators.hpp).
 //
 // Beside sweep.csv, interaction_lines.csv: for each run, the blade's

@@ -537,9 +537,10 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
   sweep.claim("runs");
   const json& runs = value.contains("runs") ? value.at("runs") : json();
   if (!runs.is_array() || runs.empty())
-    sweep.fail(sweep.full("runs"), "must be a non-empty array of {\"method\": \"full\"} or "
+    sweep.fail(sweep.full("runs"), "must be a non-empty array of {\"method\": \"full\"}, "
                                    "{\"method\": \"cb\"|\"ccm\"|\"guyan\"|\"macneal\", "
-                                   "\"modes\": [..]}");
+                                   "\"modes\": [..]} or {\"method\": \"cc\", \"modes\": [..], "
+                                   "\"fixed_interface_modes\": N}");
   for (size_t i = 0; i < runs.size(); ++i) {
     ObjectReader run(runs[i], sweep.full("runs") + "[" + std::to_string(i) + "]", top.source());
     const std::string method = string_value(run, runs[i], "method");
@@ -548,12 +549,31 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
       out.runs.push_back({method, 0});
       continue;
     }
-    if (method != "cb" && method != "ccm" && method != "guyan" && method != "macneal")
-      run.fail(run.full("method"), "must be \"full\", \"cb\", \"ccm\", \"guyan\" or "
-                                   "\"macneal\", got \"" + method + "\"");
-    for (int m : integer_list(run, runs[i], "modes", method == "guyan" ? 0 : 1, 100000))
-      out.runs.push_back({method, m});
+    if (method != "cb" && method != "ccm" && method != "guyan" && method != "macneal" &&
+        method != "cc")
+      run.fail(run.full("method"), "must be \"full\", \"cb\", \"ccm\", \"guyan\", "
+                                   "\"macneal\" or \"cc\", got \"" + method + "\"");
+    const std::vector<int> counts =
+        integer_list(run, runs[i], "modes", method == "guyan" ? 0 : 1, 100000);
+    // cc as in rubbing.campaign.runs: the n_c varied, eta one count an entry.
+    int fixed_interface_modes = 0;
+    if (method == "cc")
+      fixed_interface_modes = run.integer("fixed_interface_modes", 0, 100000);
+    else if (runs[i].is_object() && runs[i].contains("fixed_interface_modes"))
+      run.fail(run.full("fixed_interface_modes"),
+               "only for \"method\": \"cc\" (the fixed-interface modes under its "
+               "characteristic constraint modes); this run's method is \"" + method + "\"");
     run.finish();
+    for (int m : counts) {
+      // sweep.csv names a cc run cc-n_c: one n_c once in the sweep.
+      if (method == "cc")
+        for (const ComponentSweepRun& earlier : out.runs)
+          if (earlier.method == "cc" && earlier.modes == m)
+            run.fail(run.full("modes"), "n_c = " + std::to_string(m) +
+                                            " is in an earlier cc entry already (each cc run "
+                                            "is named cc-n_c: one n_c once)");
+      out.runs.push_back({method, m, fixed_interface_modes});
+    }
   }
   sweep.finish();
   if (static_cast<double>(rubbing.steps_per_revolution) * out.revolutions > 2147483647.0)

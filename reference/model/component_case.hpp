@@ -153,8 +153,9 @@ struct RubbingSetup {
 /// One run of a component sweep: "full" (modes 0) or a reduced method and
 /// its mode count.
 struct ComponentSweepRun {
-  std::string method; ///< "full", "cb", "ccm", "guyan" or "macneal"
-  int modes = 0;
+  std::string method; ///< "full", "cb", "ccm", "guyan", "macneal" or "cc"
+  int modes = 0;      ///< cc: n_c, the boundary's characteristic constraint modes
+  int fixed_interface_modes = 0; ///< cc only: eta, the Craig-Bampton basis's modes under them
 };
 
 /// The optional "sweep" object of a component case (`rsi sweep`): the

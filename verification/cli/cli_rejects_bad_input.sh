@@ -486,6 +486,21 @@ expect 2 "key 'rubbing.campaign.runs[0].fixed_interface_modes': only for \"metho
 expect 2 "--boundary-modes: characteristic constraint modes: 1 to 3 boundary modes (the boundary dofs), got 0" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cc --modes 1 --out "$work/out"
 expect 2 "key 'rubbing.campaign.runs[1].modes': n_c = 1 is in an earlier cc entry already" -- "$rsi" campaign "$work/rubbing-campaign-cc-twice.json" --out "$work/out"
 expect 2 "--boundary-modes: only for --method cc (characteristic constraint modes)" -- "$rsi" simulate "$work/rubbing-no-campaign.json" --method cb --modes 1 --boundary-modes 2 --out "$work/out"
+# rsi sweep's cc runs: the case's sweep.runs entries as rubbing.campaign.runs', or --method cc.
+sweep_variant() { # NAME SWEEP_JSON
+  printf '{"component": {"name": "tiny", "source": {"calculix_deck": "ccx/deck.inp", "calculix_matrices": "ccx/good"}, "boundary": {"node_set": "TIP"}, "units": "N, mm, t, s"}, "rubbing": {%s, "friction_coefficient": 0.1}, "sweep": %s}\n' \
+    "$rub" "$2" >"$work/sweep-$1.json"
+}
+sweep_variant cc '{"speeds": [100], "runs": [{"method": "cc", "modes": [1]}]}'
+sweep_variant cc-twice '{"speeds": [100], "runs": [{"method": "cc", "modes": [1], "fixed_interface_modes": 0}, {"method": "cc", "modes": [2, 1], "fixed_interface_modes": 1}]}'
+sweep_variant cb-fixed '{"speeds": [100], "runs": [{"method": "cb", "modes": [1], "fixed_interface_modes": 2}]}'
+expect 2 "key 'sweep.runs[0].fixed_interface_modes': missing (required)" -- "$rsi" sweep "$work/sweep-cc.json" --no-report --out "$work/out"
+expect 2 "key 'sweep.runs[1].modes': n_c = 1 is in an earlier cc entry already" -- "$rsi" sweep "$work/sweep-cc-twice.json" --no-report --out "$work/out"
+expect 2 "key 'sweep.runs[0].fixed_interface_modes': only for \"method\": \"cc\"" -- "$rsi" sweep "$work/sweep-cb-fixed.json" --no-report --out "$work/out"
+expect 2 "--boundary-modes: --method cc needs its characteristic constraint modes n_c (>= 1" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cc --modes 1 --no-report --out "$work/out"
+expect 2 "--boundary-modes: only with --method cc" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cb --modes 1 --boundary-modes 2 --no-report --out "$work/out"
+expect 2 "--method: cc with component.rotation_effects: not built in a speed subspace" -- "$rsi" sweep "$src/data/cases/blade3d-rubbing-rotating.json" --speeds 1000 --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
+expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal, cc: component cases), got 'cc'" -- "$rsi" sweep "$src/data/cases/batailly2007.json" --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
 
 # Matrix Market folders in rsi export's layout (the good one written by rsi export).
 "$rsi" export "$work/ccx-good.json" --out "$work/mm" >/dev/null

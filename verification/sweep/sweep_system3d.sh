@@ -2,10 +2,12 @@
 # rsi sweep on the paper's system in 3D (issue 27 item 6): the 6-sector
 # bladed disk against the flexible casing of
 # data/cases/bladed-disk3d-casing-ci.json, MacNeal-20 (the casing in its 30
-# modes plus static correction), 2 speeds x 0.3 revolution, --jobs 2,
+# modes plus static correction) and characteristic constraint modes CC
+# 20 + 96 (cc-96: CB-20 with its 288 boundary dofs in their 96 lowest
+# characteristic constraint modes), 2 speeds x 0.3 revolution, --jobs 2,
 # indicators after 0.2 revolution (past the 2e-4 s load at both speeds).
 # Checked:
-# - exit 0; sweep.csv a row per speed, both completed, its column 8
+# - exit 0; sweep.csv a row per speed and run, all completed, its column 8
 #   max_abs_response (against a flexible casing the gap is the two
 #   bodies': no tip radial displacement is read from it); the report's
 #   files written (make_system_sweep_report.py);
@@ -17,8 +19,9 @@
 #   moves the eigenvalues by up to eps cond_2(K) = 2.2e-16 x 5.6e8 (the CI
 #   disk's, BladedDisk3dRows) = 1.2e-7; a speed is a sum of two
 #   frequencies over n, the same relative bound;
-# - the row at 6474 rad/s against `rsi simulate` of the same run (the case
-#   at that speed, 0.3 revolution): rows, max |u_7020_1|, the largest
+# - the rows at 6474 rad/s against `rsi simulate` of the same runs (the
+#   case at that speed, 0.3 revolution; cc: --method cc --modes 20
+#   --boundary-modes 96): rows, max |u_7020_1|, the largest
 #   lambda_n, the contact fraction, the energy ratio and the balance
 #   residual recomputed in Python from its history.csv and summary.json
 #   equal to the last bit (the same doubles through the same operations;
@@ -48,7 +51,8 @@ out = sys.argv[2]
 c["rubbing"].pop("campaign", None)
 single = json.loads(json.dumps(c))
 c["sweep"] = {"speeds": [5000, 6474], "revolutions": 0.3, "transient_revolutions": 0.2,
-              "runs": [{"method": "macneal", "modes": [20]}]}
+              "runs": [{"method": "macneal", "modes": [20]},
+                       {"method": "cc", "modes": [96], "fixed_interface_modes": 20}]}
 json.dump(c, open(out + "/case.json", "w"))
 single["rubbing"]["rotation_speed"] = 6474
 single["rubbing"]["revolutions"] = 0.3
@@ -77,11 +81,13 @@ rows = list(csv.DictReader(open(out + "/sweep.csv")))
 header = open(out + "/sweep.csv").readline().strip().split(",")
 if header[7] != "max_abs_response" or "max_tip_radial" in header:
     print("FAIL column 8:", header[7]); bad += 1
-if [(r["speed_rad_s"], r["run"], r["status"]) for r in rows] != [
-        ("5000", "macneal-20", "completed"), ("6474", "macneal-20", "completed")]:
-    print("FAIL rows:", [(r["speed_rad_s"], r["run"], r["status"]) for r in rows]); bad += 1
+expected = sorted((w, run, "completed") for w in ("5000", "6474") for run in ("macneal-20", "cc-96"))
+if sorted((r["speed_rad_s"], r["run"], r["status"]) for r in rows) != expected or any(
+        r["modes"] != ("96" if r["run"] == "cc-96" else "20") for r in rows):
+    print("FAIL rows:", [(r["speed_rad_s"], r["run"], r["modes"], r["status"]) for r in rows]); bad += 1
 else:
-    print("ok   2 rows completed:", ", ".join(f"{r['speed_rad_s']} rad/s max |u| {float(r['max_abs_response']):.4g} mm, "
+    print("ok   4 rows completed:", ", ".join(f"{r['speed_rad_s']} rad/s {r['run']} max |u| "
+                                             f"{float(r['max_abs_response']):.4g} mm, "
                                              f"contact {float(r['contact_fraction']):.3f}" for r in rows))
 for name, exact in (("nodal_diameters.csv", ("part", "index", "nodal_diameter")),
                     ("interaction_lines.csv", ("family", "nodal_diameter", "casing_lobes", "casing_mode"))):
@@ -110,6 +116,12 @@ OPENBLAS_NUM_THREADS=1 "$rsi" simulate "$work/single.json" --method macneal --mo
 /usr/bin/python3 "$(dirname "$0")/sweep_row_from_history.py" "$work/out/sweep.csv" 6474 macneal-20 \
   "$work/single/history.csv" "$work/single/summary.json" 1000 1 0.2 u_7020_1 flexible ||
   fail "the 6474 rad/s row against rsi simulate's history.csv"
+OPENBLAS_NUM_THREADS=1 "$rsi" simulate "$work/single.json" --method cc --modes 20 --boundary-modes 96 \
+  --ccx-cache "$cache" --out "$work/single-cc" >"$work/simulate-cc.log" 2>&1 ||
+  { fail "simulate --method cc exited $?"; cat "$work/simulate-cc.log"; }
+/usr/bin/python3 "$(dirname "$0")/sweep_row_from_history.py" "$work/out/sweep.csv" 6474 cc-96 \
+  "$work/single-cc/history.csv" "$work/single-cc/summary.json" 1000 1 0.2 u_7020_1 flexible ||
+  fail "the 6474 rad/s cc-96 row against rsi simulate --method cc's history.csv"
 
 [ "$failures" -eq 0 ] || { echo "sweep_system3d: $failures failure(s)"; exit 1; }
 echo "sweep_system3d: all checks passed"

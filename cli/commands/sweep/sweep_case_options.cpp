@@ -17,9 +17,9 @@
 namespace rsi {
 
 std::unique_ptr<SweepPoints> case_sweep(const Case& given, const SweepOptions& options, int jobs) {
-  if (options.method == "macneal")
-    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal: "
-                     "component cases), got 'macneal'");
+  if (options.method == "macneal" || options.method == "cc")
+    throw UsageError("--method: must be full, cb, ccm or guyan for the paper's case (macneal, "
+                     "cc: component cases), got '" + options.method + "'");
   Case c = given;
   if (!c.sweep.present())
     throw UsageError(c.source + ": key 'sweep': missing; a sweep needs its duration, transient, "
@@ -90,13 +90,27 @@ std::unique_ptr<SweepPoints> case_sweep(const ComponentCase& c, const SweepOptio
   }
   if (!options.method.empty()) {
     const std::string& m = options.method;
-    if (m != "full" && m != "cb" && m != "ccm" && m != "guyan" && m != "macneal")
-      throw UsageError("--method: a component case takes full, cb, ccm, guyan or macneal, got '" +
-                       m + "'");
-    if (m != "full" && m != "guyan" && options.modes < 1)
+    if (m != "full" && m != "cb" && m != "ccm" && m != "guyan" && m != "macneal" && m != "cc")
+      throw UsageError("--method: a component case takes full, cb, ccm, guyan, macneal or cc, "
+                       "got '" + m + "'");
+    if (m != "full" && m != "guyan" && m != "cc" && options.modes < 1)
       throw UsageError("--modes: --method " + m + " needs its mode count (>= 1)");
-    sweep.runs = {{m, m == "full" ? 0 : options.modes}};
+    if (m == "cc" && options.boundary_modes < 1)
+      throw UsageError("--boundary-modes: --method cc needs its characteristic constraint "
+                       "modes n_c (>= 1; --modes: its fixed-interface modes, >= 0)");
+    // A cc run's counted modes are n_c, as in the case's sweep.runs.
+    sweep.runs = {m == "cc" ? ComponentSweepRun{m, options.boundary_modes, options.modes}
+                            : ComponentSweepRun{m, m == "full" ? 0 : options.modes}};
   }
+  if (c.rotation_effects)
+    for (const ComponentSweepRun& run : sweep.runs)
+      if (run.method == "cc") {
+        const std::string why = ": cc with component.rotation_effects: not built in a speed "
+                                "subspace (cb, ccm, macneal are); drop component.rotation_effects "
+                                "or take another method";
+        if (options.method.empty()) throw CaseError(c.case_path + ": key 'sweep.runs'" + why);
+        throw UsageError("--method" + why);
+      }
   const RubbingSetup& setup = *c.rubbing;
   const double rows_after = std::floor((sweep.revolutions - sweep.transient_revolutions) *
                                        setup.steps_per_revolution / setup.output_every);

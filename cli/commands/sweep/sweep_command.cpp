@@ -48,6 +48,7 @@ private:
   SweepOptions m_options;
   CLI::Option* m_speeds = nullptr;
   CLI::Option* m_modes = nullptr;
+  CLI::Option* m_boundary_modes = nullptr;
   CLI::Option* m_step = nullptr;
   CLI::Option* m_safety = nullptr;
   CLI::Option* m_casing = nullptr;
@@ -72,10 +73,17 @@ SweepCommand::SweepCommand(CLI::App& app)
   m_command
       .add_option("--method", sweep.method,
                   "one run in place of the case's sweep.runs: full, cb, ccm, guyan, or "
-                  "macneal (a component case only)")
-      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal"}));
-  m_modes = m_command.add_option("--modes", sweep.modes, "with --method cb, ccm or macneal: modes kept")
+                  "macneal, cc (a component case only)")
+      ->check(one_of({"full", "cb", "ccm", "guyan", "macneal", "cc"}));
+  m_modes = m_command.add_option("--modes", sweep.modes,
+                                 "with --method cb, ccm or macneal: modes kept; cc: its eta")
                 ->check(integer_in(0, 1000000000, modes_allowed));
+  m_boundary_modes =
+      m_command
+          .add_option("--boundary-modes", sweep.boundary_modes,
+                      "with --method cc: the characteristic constraint modes kept of the "
+                      "boundary (n_c, 1 to the boundary dofs)")
+          ->check(integer_in(0, 1000000000, "the characteristic constraint modes kept"));
   m_step = m_command.add_option("--time-step", sweep.time_step,
                                 "with a reduced --method: case, own or a step dividing the output "
                                 "interval");
@@ -104,6 +112,9 @@ SweepCommand::SweepCommand(CLI::App& app)
 
 void SweepCommand::check_option_rules() {
   SweepOptions& sweep = m_options;
+  if (m_boundary_modes->count() > 0 && sweep.method != "cc")
+    throw UsageError("--boundary-modes: only with --method cc (characteristic constraint "
+                     "modes); drop it");
   for (const CLI::Option* o : {m_modes, m_step, m_safety, m_casing, m_selection}) {
     if (o->count() > 0 && sweep.method.empty())
       throw UsageError(o->get_name() +

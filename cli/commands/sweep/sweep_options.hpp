@@ -17,6 +17,8 @@ struct SweepOptions {
   /// --method: one run in place of the case's sweep.runs (empty: the case's).
   std::string method;
   int modes = 0;
+  /// --boundary-modes: with --method cc, n_c (--modes its eta).
+  int boundary_modes = 0;
   std::string selection = "lowest";
   int casing_modes = 0;
   std::string time_step = "case";
