@@ -501,6 +501,19 @@ expect 2 "--boundary-modes: --method cc needs its characteristic constraint mode
 expect 2 "--boundary-modes: only with --method cc" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cb --modes 1 --boundary-modes 2 --no-report --out "$work/out"
 expect 2 "--method: cc with component.rotation_effects: not built in a speed subspace" -- "$rsi" sweep "$src/data/cases/blade3d-rubbing-rotating.json" --speeds 1000 --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
 expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal, cc: component cases), got 'cc'" -- "$rsi" sweep "$src/data/cases/batailly2007.json" --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
+# A component campaign whose only run is refused (cb-9 of 3 interior dofs): exit 3 (a run
+# failed), and the report still written, naming the run (it left no history to draw).
+rubbing_variant campaign-refused "{$rub, \"friction_coefficient\": 0.1, \"campaign\": {\"runs\": [{\"method\": \"cb\", \"modes\": [9]}]}}"
+"$rsi" campaign "$work/rubbing-campaign-refused.json" --out "$work/refused" >"$work/stdout" 2>"$work/stderr"
+got=$?
+if [ "$got" -eq 3 ] && grep -qF "Refused before a step (no history; rsi's message says why): cb-9." "$work/refused/report.md" &&
+  grep -qF "cb-9 failed: --modes: Craig-Bampton takes 0 to 3" "$work/stdout" "$work/stderr"; then
+  passes=$((passes + 1))
+  echo "ok   exit 3 | rsi campaign rubbing-campaign-refused.json | the report lists cb-9 as refused"
+else
+  failures=$((failures + 1))
+  echo "FAIL exit $got | rsi campaign rubbing-campaign-refused.json | $(tail -n 3 "$work/stderr" | tr '\n' ' ')"
+fi
 
 # Matrix Market folders in rsi export's layout (the good one written by rsi export).
 "$rsi" export "$work/ccx-good.json" --out "$work/mm" >/dev/null
