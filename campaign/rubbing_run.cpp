@@ -310,7 +310,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
       tangential(2 * k + 1) = sample.lambda(3 * k + 2);
     }
     max_lambda = std::max(max_lambda, normal.maxCoeff());
-    const HistoryRow row{sample.time,         sample.gap,          normal,     sample.energy, 0.0,
+    const HistoryRow row{sample.time,         sample.gap,          normal,     sample.energy, sample.external_work,
                          sample.contact_work, sample.damping_work, &tangential, nullptr,
                          sample.plastic_work};
     sink(row, sample.response);

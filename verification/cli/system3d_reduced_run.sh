@@ -89,6 +89,15 @@ for name in names:
         mine.append(f"penetration {s['max_penetration']:.3e} > 64 eps x 1 mm")
     if s["energy_balance_error"] > 1e-8 * s["energy_scale"]:
         mine.append(f"energy balance {s['energy_balance_error']:.3e} > 1e-8 x {s['energy_scale']:.3e}")
+    # The casing load's work in the history's last row is the run's W_ext (a
+    # reduced run's rows wrote 0 until session 31): the same double, the
+    # csv's 17 digits, and > 0 (p0 cos 2 theta pushes the casing inward).
+    with open(f"{d}/runs/{name}/history.csv") as f:
+        last = list(csv.DictReader(f))[-1]
+    w_ext = float(last["external_work"])
+    if not (w_ext > 0.0 and w_ext == s["final_external_work"]):
+        mine.append(f"history's external_work {w_ext!r} against the summary's "
+                    f"{s['final_external_work']!r}")
     expected = "full" if name == "full" else "modal-30+s"
     if s.get("casing_basis") != expected:
         mine.append(f"casing basis {s.get('casing_basis')}, expected {expected}")
