@@ -570,8 +570,8 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
         for (const ComponentSweepRun& earlier : out.runs)
           if (earlier.method == "cc" && earlier.modes == m)
             run.fail(run.full("modes"), "n_c = " + std::to_string(m) +
-                                            " is in an earlier cc entry already (each cc run "
-                                            "is named cc-n_c: one n_c once)");
+                                            " is listed already (each cc run is named cc-n_c: "
+                                            "one n_c once in sweep.runs)");
       out.runs.push_back({method, m, fixed_interface_modes});
     }
   }

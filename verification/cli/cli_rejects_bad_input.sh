@@ -495,11 +495,14 @@ sweep_variant cc '{"speeds": [100], "runs": [{"method": "cc", "modes": [1]}]}'
 sweep_variant cc-twice '{"speeds": [100], "runs": [{"method": "cc", "modes": [1], "fixed_interface_modes": 0}, {"method": "cc", "modes": [2, 1], "fixed_interface_modes": 1}]}'
 sweep_variant cb-fixed '{"speeds": [100], "runs": [{"method": "cb", "modes": [1], "fixed_interface_modes": 2}]}'
 expect 2 "key 'sweep.runs[0].fixed_interface_modes': missing (required)" -- "$rsi" sweep "$work/sweep-cc.json" --no-report --out "$work/out"
-expect 2 "key 'sweep.runs[1].modes': n_c = 1 is in an earlier cc entry already" -- "$rsi" sweep "$work/sweep-cc-twice.json" --no-report --out "$work/out"
+expect 2 "key 'sweep.runs[1].modes': n_c = 1 is listed already" -- "$rsi" sweep "$work/sweep-cc-twice.json" --no-report --out "$work/out"
 expect 2 "key 'sweep.runs[0].fixed_interface_modes': only for \"method\": \"cc\"" -- "$rsi" sweep "$work/sweep-cb-fixed.json" --no-report --out "$work/out"
 expect 2 "--boundary-modes: --method cc needs its characteristic constraint modes n_c (>= 1" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cc --modes 1 --no-report --out "$work/out"
 expect 2 "--boundary-modes: only with --method cc" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cb --modes 1 --boundary-modes 2 --no-report --out "$work/out"
 expect 2 "--method: cc with component.rotation_effects: not built in a speed subspace" -- "$rsi" sweep "$src/data/cases/blade3d-rubbing-rotating.json" --speeds 1000 --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
+/usr/bin/python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); c["sweep"] = {"speeds": [1000], "runs": [{"method": "cc", "modes": [3], "fixed_interface_modes": 2}]}; json.dump(c, open(sys.argv[2], "w"))' \
+  "$src/data/cases/blade3d-rubbing-rotating.json" "$work/sweep-cc-rotating.json"
+expect 2 "key 'sweep.runs': cc with component.rotation_effects: not built in a speed subspace" -- "$rsi" sweep "$work/sweep-cc-rotating.json" --no-report --out "$work/out"
 expect 2 "--method: must be full, cb, ccm or guyan for the paper's case (macneal, cc: component cases), got 'cc'" -- "$rsi" sweep "$src/data/cases/batailly2007.json" --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
 # A component campaign whose only run is refused (cb-9 of 3 interior dofs): exit 3 (a run
 # failed), and the report still written, naming the run (it left no history to draw).

@@ -72,8 +72,8 @@ SweepCommand::SweepCommand(CLI::App& app)
       "FROM:TO:COUNT or W1,W2,... [rad/s] in place of the case's sweep.speeds");
   m_command
       .add_option("--method", sweep.method,
-                  "one run in place of the case's sweep.runs: full, cb, ccm, guyan, or "
-                  "macneal, cc (a component case only)")
+                  "one run in place of the case's sweep.runs: full, cb, ccm or guyan; a "
+                  "component case also macneal or cc")
       ->check(one_of({"full", "cb", "ccm", "guyan", "macneal", "cc"}));
   m_modes = m_command.add_option("--modes", sweep.modes,
                                  "with --method cb, ccm or macneal: modes kept; cc: its eta")
