@@ -170,6 +170,16 @@ SweepOutcome drive_sweep(const SweepPoints& points, const SweepRanks& ranks,
     if (workers_done && !fatal_seen.empty()) break;
   }
   if (host_thread) host_thread->join();
+  // A signal between this rank's runs (none of them saw it): rank 0 must
+  // hear of it as of a run's, or it waits for rows that never come while
+  // this rank waits for it in MPI_Finalize (CI, session 31: a hang).
+  if (ranks.rank() != 0 && fatal_seen.empty() && options.stop_requested()) {
+    try {
+      options.throw_if_stopped();
+    } catch (const std::exception& e) {
+      fatal_seen = failure_message(e);
+    }
+  }
   if (!fatal_seen.empty()) {
     if (ranks.rank() != 0) ranks.send_fatal(fatal_seen);
     options.throw_if_stopped();
