@@ -70,6 +70,18 @@ std::vector<int> integer_list(ObjectReader& r, const json& object, const std::st
   return out;
 }
 
+/// A reduced run entry's "fixed_interface_modes": eta of a "cc" entry (the
+/// fixed-interface modes under its characteristic constraint modes, which
+/// are the counts varied), refused on any other method.
+int fixed_interface_modes_of(ObjectReader& run, const json& entry, const std::string& method) {
+  if (method == "cc") return run.integer("fixed_interface_modes", 0, 100000);
+  if (entry.is_object() && entry.contains("fixed_interface_modes"))
+    run.fail(run.full("fixed_interface_modes"),
+             "only for \"method\": \"cc\" (the fixed-interface modes under its "
+             "characteristic constraint modes); this run's method is \"" + method + "\"");
+  return 0;
+}
+
 int node_id(int id) {
   return id;
 }
@@ -387,14 +399,7 @@ RubbingSetup read_rubbing(ObjectReader r, const json& object) {
         run.fail(run.full("method"), "must be \"cb\", \"ccm\", \"macneal\" or \"cc\", got \"" +
                                          item.method + "\"");
       item.modes = integer_list(run, runs[i], "modes", 1, 100000);
-      // cc: the boundary's characteristic constraint modes are the counts
-      // varied (modes), on one Craig-Bampton basis of eta fixed-interface modes.
-      if (item.method == "cc")
-        item.fixed_interface_modes = run.integer("fixed_interface_modes", 0, 100000);
-      else if (runs[i].is_object() && runs[i].contains("fixed_interface_modes"))
-        run.fail(run.full("fixed_interface_modes"),
-                 "only for \"method\": \"cc\" (the fixed-interface modes under its "
-                 "characteristic constraint modes); this run's method is \"" + item.method + "\"");
+      item.fixed_interface_modes = fixed_interface_modes_of(run, runs[i], item.method);
       run.finish();
       // cc runs are named cc-n_c (runs/cc-n_c): one n_c once in the campaign.
       if (item.method == "cc")
@@ -555,14 +560,7 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
                                    "\"macneal\" or \"cc\", got \"" + method + "\"");
     const std::vector<int> counts =
         integer_list(run, runs[i], "modes", method == "guyan" ? 0 : 1, 100000);
-    // cc as in rubbing.campaign.runs: the n_c varied, eta one count an entry.
-    int fixed_interface_modes = 0;
-    if (method == "cc")
-      fixed_interface_modes = run.integer("fixed_interface_modes", 0, 100000);
-    else if (runs[i].is_object() && runs[i].contains("fixed_interface_modes"))
-      run.fail(run.full("fixed_interface_modes"),
-               "only for \"method\": \"cc\" (the fixed-interface modes under its "
-               "characteristic constraint modes); this run's method is \"" + method + "\"");
+    const int fixed_interface_modes = fixed_interface_modes_of(run, runs[i], method);
     run.finish();
     for (int m : counts) {
       // sweep.csv names a cc run cc-n_c: one n_c once in the sweep.
