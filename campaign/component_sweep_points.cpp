@@ -18,6 +18,7 @@
 #include "rubbing_indicators.hpp"
 #include "rubbing_run.hpp"
 #include "run_monitor.hpp"
+#include "run_list_checks.hpp"
 #include "run_outputs.hpp"
 #include "speed_subspace.hpp"
 
@@ -464,6 +465,18 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
     r.coordinates = model.component().n_dofs();
     if (rotation && r.run.method == "cc")
       throw std::invalid_argument(where + "cc has no speed subspace (rotation effects)");
+    // A refused mode count of a case's entry named by its key, of a
+    // --method run by the option (where).
+    const auto refused = [&](const ReductionError& e) {
+      const std::optional<ReductionError> keyed =
+          r.run.entry < 0
+              ? std::nullopt
+              : keyed_by_entry(e, "sweep.runs[" + std::to_string(r.run.entry) + "]", r.run.method);
+      if (keyed)
+        return ReductionError(keyed->what(),
+                              in_context(keyed->advice(), model.component_case().case_path + ": "));
+      return ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
+    };
     if (rotation && r.run.method != "full") {
       // One subspace over the speeds: the method's bases at 0 and the fit
       // speeds; each speed's basis reduced inside it (speed_subspace.hpp).
@@ -474,7 +487,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
         r.subspace = std::make_shared<const SpeedSubspace>(
             speed_subspace(*rotation, r.run.method, r.run.modes, basis_speeds, threads));
       } catch (const ReductionError& e) {
-        throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
+        throw refused(e);
       }
       r.basis_seconds = seconds_since(t);
       r.coordinates = static_cast<int>(model.component().boundary.size()) + r.run.modes;
@@ -490,7 +503,7 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
                          r.run.method, cc ? r.run.fixed_interface_modes : r.run.modes,
                          cc ? r.run.modes : 0);
       } catch (const ReductionError& e) {
-        throw ReductionError(e.what(), in_context(e.advice(), where + run_name_of(r.run) + ": "));
+        throw refused(e);
       }
       r.basis_seconds = seconds_since(t);
       r.coordinates = r.basis->n_reduced() + (r.casing ? r.casing->size() : 0);

@@ -1,6 +1,7 @@
 #include "rubbing_campaign.hpp"
 
 #include "failure_advice.hpp"
+#include "run_list_checks.hpp"
 
 #include <algorithm>
 
@@ -8,17 +9,19 @@ namespace rsi {
 
 std::vector<RubbingCampaignRun> rubbing_campaign_runs(const RubbingSetup& setup) {
   std::vector<RubbingCampaignRun> runs;
-  const auto run_of = [](const std::string& method, int modes, int fixed_interface_modes) {
+  const auto run_of = [](const std::string& method, int modes, int fixed_interface_modes, int entry) {
     RubbingCampaignRun r;
     r.method = method;
     r.modes = modes;
     r.fixed_interface_modes = fixed_interface_modes;
+    r.entry = entry;
     return r;
   };
-  if (setup.full_revolutions > 0.0) runs.push_back(run_of("full", 0, 0));
-  for (const RubbingRuns& item : setup.campaign)
-    for (int modes : item.modes)
-      runs.push_back(run_of(item.method, modes, item.fixed_interface_modes));
+  if (setup.full_revolutions > 0.0) runs.push_back(run_of("full", 0, 0, -1));
+  for (size_t i = 0; i < setup.campaign.size(); ++i)
+    for (int modes : setup.campaign[i].modes)
+      runs.push_back(run_of(setup.campaign[i].method, modes,
+                            setup.campaign[i].fixed_interface_modes, static_cast<int>(i)));
   return runs;
 }
 
@@ -48,7 +51,11 @@ bool run_rubbing_campaign_entry(const RubbingModel& model, RubbingCampaignRun& e
   try {
     entry.run = run_rubbing(model, o, keep);
   } catch (const ReductionError& e) {
-    entry.error = failure_message(e);
+    const std::optional<ReductionError> keyed =
+        entry.entry < 0 ? std::nullopt
+                        : keyed_by_entry(e, "rubbing.campaign.runs[" + std::to_string(entry.entry) + "]",
+                                         entry.method);
+    entry.error = failure_message(keyed ? *keyed : e);
     return false;
   }
   if (!entry.run.summary.completed) entry.error = run_status(entry.run.summary);

@@ -33,6 +33,7 @@ struct RubbingCampaignRun {
   std::string method;
   int modes = 0;                 ///< cc: n_c, the boundary's characteristic constraint modes
   int fixed_interface_modes = 0; ///< cc: eta
+  int entry = -1;                ///< its entry's index in rubbing.campaign.runs (-1: the full run)
   RubbingRun run;
   std::vector<double> response;
   std::vector<Eigen::VectorXd> lambda_n;

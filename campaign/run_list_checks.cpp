@@ -48,4 +48,18 @@ void check_case_step_bound(const Case& c, const Casing& casing) {
   check_time_step_bound(c.time.step, casing.stiffness, casing.mass, false, "casing");
 }
 
+std::optional<ReductionError> keyed_by_entry(const ReductionError& e, const std::string& entry_key,
+                                             const std::string& method) {
+  FailureAdvice advice = e.advice();
+  std::string key;
+  if (advice.input == FailedInput::boundary_mode_count)
+    key = "modes"; // cc's n_c
+  else if (advice.input == FailedInput::mode_count)
+    key = method == "cc" ? "fixed_interface_modes" : "modes";
+  if (key.empty()) return std::nullopt;
+  advice.input = FailedInput::unnamed;
+  advice.context += "key '" + entry_key + "." + key + "': ";
+  return ReductionError(e.what(), advice);
+}
+
 } // namespace rsi

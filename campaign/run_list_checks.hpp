@@ -2,12 +2,15 @@
 // Checks of the paper's case's run lists (its "campaign", its sweep's
 // runs) against the model, before any run: each full or reduced run would
 // otherwise refuse its input only after its assembly or its basis.
+// And a component case's run lists' refusals named by their entries' keys.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "case_file.hpp"
 #include "casing.hpp"
+#include "reduced_basis.hpp"
 
 namespace rsi {
 
@@ -25,5 +28,13 @@ int check_runs_against_model(const Case& c, const std::vector<CampaignRun>& runs
 /// omega_max (run_monitor.hpp), before any run: each full run would refuse
 /// it after its assembly. Throws the StabilityError of that check.
 void check_case_step_bound(const Case& c, const Casing& casing);
+
+/// A reduction's refusal of a mode count of a component case's run entry
+/// `entry_key` ("rubbing.campaign.runs[2]", "sweep.runs[0]") named by the
+/// entry's key (modes; a cc entry's eta its fixed_interface_modes), not by
+/// the option of rsi simulate the reduction's advice names; nullopt when
+/// the refusal is not of a mode count.
+std::optional<ReductionError> keyed_by_entry(const ReductionError& e, const std::string& entry_key,
+                                             const std::string& method);
 
 } // namespace rsi

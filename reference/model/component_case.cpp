@@ -551,7 +551,7 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
     const std::string method = string_value(run, runs[i], "method");
     if (method == "full") {
       run.finish(); // "modes" refused: the full model keeps every dof
-      out.runs.push_back({method, 0});
+      out.runs.push_back({method, 0, 0, static_cast<int>(i)});
       continue;
     }
     if (method != "cb" && method != "ccm" && method != "guyan" && method != "macneal" &&
@@ -570,7 +570,7 @@ ComponentSweep read_component_sweep(ObjectReader& top, const json& value,
             run.fail(run.full("modes"), "n_c = " + std::to_string(m) +
                                             " is listed already (each cc run is named cc-n_c: "
                                             "one n_c once in sweep.runs)");
-      out.runs.push_back({method, m, fixed_interface_modes});
+      out.runs.push_back({method, m, fixed_interface_modes, static_cast<int>(i)});
     }
   }
   sweep.finish();

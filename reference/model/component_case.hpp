@@ -156,6 +156,7 @@ struct ComponentSweepRun {
   std::string method; ///< "full", "cb", "ccm", "guyan", "macneal" or "cc"
   int modes = 0;      ///< cc: n_c, the boundary's characteristic constraint modes
   int fixed_interface_modes = 0; ///< cc only: eta, the Craig-Bampton basis's modes under them
+  int entry = -1; ///< its entry's index in sweep.runs (-1: given by rsi sweep's --method)
 };
 
 /// The optional "sweep" object of a component case (`rsi sweep`): the

@@ -499,6 +499,11 @@ expect 2 "key 'sweep.runs[1].modes': n_c = 1 is listed already" -- "$rsi" sweep 
 expect 2 "key 'sweep.runs[0].fixed_interface_modes': only for \"method\": \"cc\"" -- "$rsi" sweep "$work/sweep-cb-fixed.json" --no-report --out "$work/out"
 expect 2 "--boundary-modes: --method cc needs its characteristic constraint modes n_c (>= 1" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cc --modes 1 --no-report --out "$work/out"
 expect 2 "--boundary-modes: only with --method cc" -- "$rsi" sweep "$work/rubbing-no-campaign.json" --speeds 100 --method cb --modes 1 --boundary-modes 2 --no-report --out "$work/out"
+# A mode count the reduction refuses, named by the entry's key (not simulate's options).
+sweep_variant cc-many '{"speeds": [100], "runs": [{"method": "full"}, {"method": "cc", "modes": [9], "fixed_interface_modes": 0}]}'
+sweep_variant cc-eta '{"speeds": [100], "runs": [{"method": "cc", "modes": [1], "fixed_interface_modes": 9}]}'
+expect 2 "sweep-cc-many.json: key 'sweep.runs[1].modes': characteristic constraint modes: 1 to 3" -- "$rsi" sweep "$work/sweep-cc-many.json" --no-report --out "$work/out"
+expect 2 "sweep-cc-eta.json: key 'sweep.runs[0].fixed_interface_modes': Craig-Bampton takes 0 to" -- "$rsi" sweep "$work/sweep-cc-eta.json" --no-report --out "$work/out"
 expect 2 "--method: cc with component.rotation_effects: not built in a speed subspace" -- "$rsi" sweep "$src/data/cases/blade3d-rubbing-rotating.json" --speeds 1000 --method cc --modes 2 --boundary-modes 3 --no-report --out "$work/out"
 /usr/bin/python3 -c 'import json, sys; c = json.load(open(sys.argv[1])); c["sweep"] = {"speeds": [1000], "runs": [{"method": "cc", "modes": [3], "fixed_interface_modes": 2}]}; json.dump(c, open(sys.argv[2], "w"))' \
   "$src/data/cases/blade3d-rubbing-rotating.json" "$work/sweep-cc-rotating.json"
@@ -510,7 +515,7 @@ rubbing_variant campaign-refused "{$rub, \"friction_coefficient\": 0.1, \"campai
 "$rsi" campaign "$work/rubbing-campaign-refused.json" --out "$work/refused" >"$work/stdout" 2>"$work/stderr"
 got=$?
 if [ "$got" -eq 3 ] && grep -qF "Refused before a step (no history; rsi's message says why): cb-9." "$work/refused/report.md" &&
-  grep -qF "cb-9 failed: --modes: Craig-Bampton takes 0 to 3" "$work/stdout" "$work/stderr"; then
+  grep -qF "cb-9 failed: key 'rubbing.campaign.runs[0].modes': Craig-Bampton takes 0 to 3" "$work/stdout" "$work/stderr"; then
   passes=$((passes + 1))
   echo "ok   exit 3 | rsi campaign rubbing-campaign-refused.json | the report lists cb-9 as refused"
 else
