@@ -1,5 +1,5 @@
-# Sourced by run-main.sh and run-tests.sh: installs the Debian packages rsi
-# needs when any is missing (apt-get; as root, or through sudo).
+# Sourced by run-main.sh, run-tests.sh and .ci/run: installs the Debian
+# packages rsi needs when any is missing (apt-get; as root, or through sudo).
 rsi_packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev liblapacke-dev libgsl-dev
   libgtest-dev libspectra-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-matplotlib
   python3-scipy python3-numpy calculix-ccx calculix-ccx-test gmsh libopenblas0-pthread libopenblas-dev

@@ -172,8 +172,11 @@ SweepOutcome drive_sweep(const SweepPoints& points, const SweepRanks& ranks,
   if (host_thread) host_thread->join();
   // A signal between this rank's runs (none of them saw it): rank 0 must
   // hear of it as of a run's, or it waits for rows that never come while
-  // this rank waits for it in MPI_Finalize (CI, session 31: a hang).
-  if (ranks.rank() != 0 && fatal_seen.empty() && options.stop_requested()) {
+  // this rank waits for it in MPI_Finalize (CI, session 31: a hang). Read
+  // once: the one read decides between the fatal word and done, so no
+  // signal in between can leave rank 0 without either. (A signal after the
+  // last row was sent marks nothing lost: rank 0 publishes every row.)
+  if (ranks.rank() != 0 && fatal_seen.empty()) {
     try {
       options.throw_if_stopped();
     } catch (const std::exception& e) {
@@ -185,8 +188,10 @@ SweepOutcome drive_sweep(const SweepPoints& points, const SweepRanks& ranks,
     options.throw_if_stopped();
     throw std::runtime_error("sweep: " + fatal_seen);
   }
-  options.throw_if_stopped();
-  if (ranks.rank() != 0) ranks.send_done();
+  if (ranks.rank() == 0)
+    options.throw_if_stopped();
+  else
+    ranks.send_done(); // a signal from here on ends the process after MPI_Finalize
   return out;
 }
 

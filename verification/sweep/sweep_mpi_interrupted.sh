@@ -108,7 +108,7 @@ stop_sweep() {
   # How long the job may run on: 60 s to stop, and after rank1-TERM rank 0's
   # own runs, which go on: 60 s + 3 T. At the signal T = before - started
   # has seen 4 or more runs on 2 ranks: rank 0 runs at about 2 / T and has
-  # at most 5 left (it did 1 or more), so 2.5 T. (CI, session 31, sanitizer build
+  # at most 5 left (it did 1 or more), so 2.5 T, rounded up to 3 T. (CI, session 31, sanitizer build
   # under load: about 20 s a run, 4 left at the signal, 60 s was too few.)
   local limit_ds=600
   [ "$what" = rank1-TERM ] && limit_ds=$((600 + (before - started) * 3 / 100))

@@ -30,8 +30,8 @@
 #   spectral peaks to 1e-9 (numpy's FFT against GSL's, as sweep_components).
 #   The macneal-20 row was checked so too until session 32: the same sweep
 #   and simulate code with another basis, 35-50 s of the test's time.
-# Release only (two MacNeal-20 bases of the 29,484-dof disk, about 35 s
-# each): the sweep's code runs under the sanitizers in sweep_rotating and
+# Release only (the sweep's MacNeal-20 basis of the 29,484-dof disk, about
+# 35 s, and the two CC 20 + 96 bases, the sweep's and simulate's): the sweep's code runs under the sanitizers in sweep_rotating and
 # the indicators' flexible-casing form in test_rubbing_indicators.
 # Skipped (exit 77) without gmsh or ccx.
 # Usage: sweep_system3d.sh RSI SOURCE_DIR CCX_CACHE

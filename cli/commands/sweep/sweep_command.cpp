@@ -19,6 +19,7 @@
 #include "case_kinds.hpp"
 #include "command.hpp"
 #include "command_options.hpp"
+#include "failure_advice.hpp"
 
 #include "interruption.hpp"
 #include "mpi_session.hpp"
@@ -205,7 +206,17 @@ int SweepCommand::run(StagedOutput& output) {
   // --out is rank 0's alone, opened before any run (a bad --out: exit 2, nothing run).
   std::string stage;
   if (mpi.rank() == 0) stage = output.open(options.out, "--out", sweep_output_set());
-  points->prepare(); // on every rank: each runs its share
+  // On every rank: each runs its share. A rank other than 0 stopped while it
+  // builds its bases (a signal an eigensolver polled, out of memory) tells
+  // rank 0 and ends, as a stopped run does (sweep_driver.cpp): leaving by
+  // the exception, it would wait in MPI_Finalize for rank 0, which waits
+  // for its rows.
+  try {
+    points->prepare();
+  } catch (const std::exception& e) {
+    if (mpi.rank() != 0) mpi.end_reported(failure_message(e));
+    throw;
+  }
   std::unique_ptr<StreamedTextFile> csv;
   std::string written = options.out + "/sweep.csv"; // the files the last line names
   if (mpi.rank() == 0) {
