@@ -1,11 +1,14 @@
 #include "guyan.hpp"
 
 #include <chrono>
+#include <functional>
+#include <future>
 #include <limits>
 #include <mutex>
 #include <new>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include <Eigen/CholmodSupport>
 
@@ -172,9 +175,22 @@ void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
   // (linalg/transpose_product gathers it, reading K once for all columns);
   // for a K with round-off asymmetry it gives the transpose of T^T K T,
   // whose symmetric part below is the same up to round-off.
+  // The two projections are independent: T^T M T on a second thread while
+  // this one forms T^T K T, each the same single-threaded product as alone
+  // (the same bits); a thread's failure (std::bad_alloc) reaches the caller
+  // through its future. Both hold their K^T T at once: 2 n r doubles more.
   const Eigen::MatrixXd& t = basis.transformation;
-  const Eigen::MatrixXd k = t.transpose() * transpose_product(stiffness, t);
-  const Eigen::MatrixXd m = t.transpose() * transpose_product(mass, t);
+  const auto project = [&t](const Eigen::SparseMatrix<double>& a) -> Eigen::MatrixXd {
+    return t.transpose() * transpose_product(a, t);
+  };
+  // Below ~2e7 multiply-adds (n r^2) a thread costs more than it saves.
+  const double work = static_cast<double>(t.rows()) * static_cast<double>(t.cols()) * t.cols();
+  const auto policy = work >= 2e7 && std::thread::hardware_concurrency() >= 2
+                          ? std::launch::async
+                          : std::launch::deferred;
+  std::future<Eigen::MatrixXd> mass_side = std::async(policy, project, std::cref(mass));
+  const Eigen::MatrixXd k = project(stiffness);
+  const Eigen::MatrixXd m = mass_side.get();
   basis.stiffness = 0.5 * (k + k.transpose());
   basis.mass = 0.5 * (m + m.transpose());
   basis.build_seconds =
