@@ -1,8 +1,7 @@
 #include "guyan.hpp"
 
 #include <chrono>
-#include <functional>
-#include <future>
+#include <atomic>
 #include <limits>
 #include <mutex>
 #include <new>
@@ -15,6 +14,7 @@
 #include "cholmod_handles.hpp"
 #include "energy_resolution.hpp"
 #include "transpose_product.hpp"
+#include "worker_threads.hpp"
 
 namespace rsi {
 
@@ -175,22 +175,25 @@ void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
   // (linalg/transpose_product gathers it, reading K once for all columns);
   // for a K with round-off asymmetry it gives the transpose of T^T K T,
   // whose symmetric part below is the same up to round-off.
-  // The two projections are independent: T^T M T on a second thread while
-  // this one forms T^T K T, each the same single-threaded product as alone
-  // (the same bits); a thread's failure (std::bad_alloc) reaches the caller
-  // through its future. Both hold their K^T T at once: 2 n r doubles more.
+  // The two projections are independent: taken in turn by two threads
+  // (linalg/worker_threads: one thread that cannot start leaves both to the
+  // other, a failure such as std::bad_alloc is rethrown here after both
+  // joined), each the same single-threaded product as alone: the same bits.
+  // At once they hold up to 3 n r doubles more (transpose_product's
+  // row-major copy of T, its result and the returned copy; n r through the
+  // product with T^T).
   const Eigen::MatrixXd& t = basis.transformation;
-  const auto project = [&t](const Eigen::SparseMatrix<double>& a) -> Eigen::MatrixXd {
-    return t.transpose() * transpose_product(a, t);
+  Eigen::MatrixXd k;
+  Eigen::MatrixXd m;
+  std::atomic<int> next{0};
+  std::atomic<bool> failed{false};
+  const auto worker = [&] {
+    for (int job = next++; job < 2 && !failed; job = next++)
+      (job == 0 ? k : m) = t.transpose() * transpose_product(job == 0 ? stiffness : mass, t);
   };
   // Below ~2e7 multiply-adds (n r^2) a thread costs more than it saves.
   const double work = static_cast<double>(t.rows()) * static_cast<double>(t.cols()) * t.cols();
-  const auto policy = work >= 2e7 && std::thread::hardware_concurrency() >= 2
-                          ? std::launch::async
-                          : std::launch::deferred;
-  std::future<Eigen::MatrixXd> mass_side = std::async(policy, project, std::cref(mass));
-  const Eigen::MatrixXd k = project(stiffness);
-  const Eigen::MatrixXd m = mass_side.get();
+  run_on_threads(work >= 2e7 && std::thread::hardware_concurrency() >= 2 ? 2 : 1, worker, failed);
   basis.stiffness = 0.5 * (k + k.transpose());
   basis.mass = 0.5 * (m + m.transpose());
   basis.build_seconds =
