@@ -1,7 +1,7 @@
 #include "guyan.hpp"
 
-#include <chrono>
 #include <atomic>
+#include <chrono>
 #include <limits>
 #include <mutex>
 #include <new>
