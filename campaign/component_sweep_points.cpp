@@ -499,9 +499,8 @@ std::unique_ptr<SweepPoints> component_sweep_points(RubbingModel model, Componen
       r.casing = casing;
       try {
         const bool cc = r.run.method == "cc";
-        r.basis = reduce(model.component().stiffness, model.component().mass, model.component().boundary,
-                         r.run.method, cc ? r.run.fixed_interface_modes : r.run.modes,
-                         cc ? r.run.modes : 0);
+        r.basis = reduce(model.component(), r.run.method,
+                         cc ? r.run.fixed_interface_modes : r.run.modes, cc ? r.run.modes : 0);
       } catch (const ReductionError& e) {
         throw refused(e);
       }

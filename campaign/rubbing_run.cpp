@@ -245,8 +245,7 @@ RubbingRun run_reduced_rubbing(const RubbingModel& model, const RubbingRunOption
   std::optional<ReducedBasis> own;
   const Component& component = model.component();
   if (options.basis == nullptr)
-    own = reduce(component.stiffness, component.mass, component.boundary, options.method,
-                 options.modes, options.boundary_modes);
+    own = reduce(component, options.method, options.modes, options.boundary_modes);
   const ReducedBasis& basis = options.basis != nullptr ? *options.basis : *own;
   const auto run_start = std::chrono::steady_clock::now();
   const double basis_seconds = std::chrono::duration<double>(run_start - t0).count();

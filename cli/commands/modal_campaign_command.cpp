@@ -130,7 +130,7 @@ int ModalCampaignCommand::run(StagedOutput& output) {
   for (const std::string& method : campaign.methods)
     for (int modes : campaign.modes) {
       throw_if_interrupted(); // between bases (each a few eigensolves)
-      const ReducedBasis basis = reduce(c.stiffness, c.mass, c.boundary, method, modes);
+      const ReducedBasis basis = reduce(c, method, modes, 0);
       const Eigen::VectorXd reduced = reduced_eigenvalues(basis);
       const int compared = std::min<int>(count, static_cast<int>(reduced.size()));
       double largest = 0.0, smallest = 0.0, squares = 0.0;

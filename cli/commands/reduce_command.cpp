@@ -76,7 +76,7 @@ int ReduceCommand::run(StagedOutput& output) {
     throw UsageError(input.case_source + ": the component " + c.name +
                      " has no boundary dofs to keep; a reduction needs them");
   const ReducedBasis basis =
-      reduce(c.stiffness, c.mass, c.boundary, options.method, options.modes);
+      reduce(c, options.method, options.modes, 0);
   // With a massless boundary (MacNeal) the boundary is condensed first (critical_step.hpp).
   const double omega_max = reduced_omega_max(basis);
   stage.done();

@@ -12,14 +12,14 @@ namespace rsi {
 
 ReducedBasis characteristic_constraint(const Eigen::SparseMatrix<double>& stiffness,
                                        const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                       int eta, int n_c) {
+                                       int eta, int n_c, const CyclicBoundary* cyclic) {
   const int n_b = p.n_boundary();
   if (n_c < 1 || n_c > n_b)
     throw ReductionError("characteristic constraint modes: 1 to " + std::to_string(n_b) +
                              " boundary modes (the boundary dofs), got " + std::to_string(n_c),
                          failed_input(FailedInput::boundary_mode_count));
   const auto start = std::chrono::steady_clock::now();
-  ReducedBasis basis = craig_bampton(stiffness, mass, p, eta);
+  ReducedBasis basis = craig_bampton(stiffness, mass, p, eta, cyclic);
   // CB's q = (u_eta, u_B): the boundary block is its last n_B rows/columns.
   // Eigen's generalized solver does not report a failed Cholesky of M^_BB:
   // checked here first.

@@ -20,14 +20,16 @@
 
 #include "partition.hpp"
 #include "reduced_basis.hpp"
+#include "turned_constraint_modes.hpp"
 
 namespace rsi {
 
 /// CB with eta fixed-interface modes and its boundary reduced to the n_c
 /// lowest characteristic constraint modes. Throws ReductionError for counts
 /// out of range or a boundary mass M^_BB that is not positive definite.
+/// With `cyclic`, its CB basis by the turns (craig_bampton.hpp).
 ReducedBasis characteristic_constraint(const Eigen::SparseMatrix<double>& stiffness,
                                        const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                       int eta, int n_c);
+                                       int eta, int n_c, const CyclicBoundary* cyclic = nullptr);
 
 } // namespace rsi

@@ -18,11 +18,11 @@ void check_fixed_interface_count(const Partition& p, int eta) {
 
 FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
                                         const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                        int count) {
+                                        int count, const CyclicBoundary* cyclic) {
   check_fixed_interface_count(p, count);
   FixedInterfacePool pool;
   if (count == 0) {
-    pool.constraint = constraint_modes(stiffness, p);
+    pool.constraint = constraint_modes(stiffness, p, cyclic);
     return pool;
   }
   const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
@@ -31,10 +31,10 @@ FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiff
   if (solver == ModalSolver::sparse && shares_factor(p.n_interior())) {
     const auto factor =
         factor_positive_definite(k_ii, m_ii, interior_stiffness_name(p), interior_stiffness_remedy);
-    pool.constraint = constraint_modes(stiffness, p, *factor, k_ii);
+    pool.constraint = constraint_modes(stiffness, p, *factor, k_ii, cyclic);
     pool.modes = lowest_modes(k_ii, m_ii, count, *factor);
   } else {
-    pool.constraint = constraint_modes(stiffness, p);
+    pool.constraint = constraint_modes(stiffness, p, cyclic);
     pool.modes = lowest_modes(k_ii, m_ii, count, solver);
     // count >= n_I/4: the dense solver's eigenvalues as they are. K_II passed
     // the definiteness check of its factor above (constraint_modes), so a
@@ -61,7 +61,8 @@ FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiff
 ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
                            const Eigen::SparseMatrix<double>& mass, const Partition& p,
                            const FixedInterfacePool& pool, const std::vector<int>& kept,
-                           std::chrono::steady_clock::time_point start) {
+                           std::chrono::steady_clock::time_point start,
+                           const CyclicBoundary* cyclic) {
   const int eta = static_cast<int>(kept.size());
   check_fixed_interface_count(p, eta);
   ReducedBasis basis;
@@ -79,18 +80,19 @@ ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
       place_rows(p.n(), p.interior, pool.constraint) +
       place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
   basis.transformation = t;
-  finish_basis(stiffness, mass, p.n_boundary(), eta, start, basis);
+  finish_basis(stiffness, mass, p.n_boundary(), eta, start, basis, cyclic);
   return basis;
 }
 
 ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
-                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta) {
+                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta,
+                           const CyclicBoundary* cyclic) {
   check_fixed_interface_count(p, eta);
   const auto start = std::chrono::steady_clock::now();
-  const FixedInterfacePool pool = fixed_interface_pool(stiffness, mass, p, eta);
+  const FixedInterfacePool pool = fixed_interface_pool(stiffness, mass, p, eta, cyclic);
   std::vector<int> kept(eta);
   std::iota(kept.begin(), kept.end(), 0);
-  return craig_bampton(stiffness, mass, p, pool, kept, start);
+  return craig_bampton(stiffness, mass, p, pool, kept, start, cyclic);
 }
 
 } // namespace rsi

@@ -17,6 +17,7 @@
 #include "modal_analysis.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
+#include "turned_constraint_modes.hpp"
 
 namespace rsi {
 
@@ -32,20 +33,24 @@ struct FixedInterfacePool {
 };
 
 /// Throws ReductionError for a count out of range or a singular K_II.
+/// With `cyclic`, the constraint modes by the turns (guyan.hpp).
 FixedInterfacePool fixed_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
                                         const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                        int count);
+                                        int count, const CyclicBoundary* cyclic = nullptr);
 
 /// The basis keeping the pool's modes `kept` (ascending indices into the
 /// pool), in that order; `start` is when the work began (build_seconds).
-/// ReducedBasis::mode_index = kept, n_modes = kept.size().
+/// ReducedBasis::mode_index = kept, n_modes = kept.size(). With `cyclic`
+/// (the pool's too), K^ and M^ by the turns (finish_basis).
 ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
                            const Eigen::SparseMatrix<double>& mass, const Partition& p,
                            const FixedInterfacePool& pool, const std::vector<int>& kept,
-                           std::chrono::steady_clock::time_point start);
+                           std::chrono::steady_clock::time_point start,
+                           const CyclicBoundary* cyclic = nullptr);
 
 /// The eta lowest fixed-interface modes.
 ReducedBasis craig_bampton(const Eigen::SparseMatrix<double>& stiffness,
-                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta);
+                           const Eigen::SparseMatrix<double>& mass, const Partition& p, int eta,
+                           const CyclicBoundary* cyclic = nullptr);
 
 } // namespace rsi

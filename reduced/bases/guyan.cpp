@@ -147,28 +147,35 @@ std::string interior_stiffness_name(const Partition& p) {
 const char* const interior_stiffness_remedy =
     "the boundary must hold the part against every rigid motion (is the hub clamped?)";
 
-Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p) {
+Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
+                                 const CyclicBoundary* cyclic) {
   // Every dof on the boundary: no interior to solve for (T = I); CHOLMOD
   // takes no empty matrix.
   if (p.n_interior() == 0) return Eigen::MatrixXd(0, p.n_boundary());
   const Eigen::SparseMatrix<double> k_ii = sparse_block(stiffness, p.interior, p.interior);
-  const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
-  return solve_positive_definite(k_ii, -Eigen::MatrixXd(k_ib), interior_stiffness_name(p),
-                                 interior_stiffness_remedy)
-      .value;
+  const InteriorSolve solve = [&](const Eigen::MatrixXd& b) {
+    return solve_positive_definite(k_ii, b, interior_stiffness_name(p), interior_stiffness_remedy)
+        .value;
+  };
+  if (cyclic != nullptr) return turned_constraint_modes(stiffness, p, *cyclic, solve);
+  return solve(-Eigen::MatrixXd(sparse_block(stiffness, p.interior, p.boundary)));
 }
 
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
                                  const CholmodShiftInvert& k_ii_factor,
-                                 const Eigen::SparseMatrix<double>& k_ii) {
-  const Eigen::SparseMatrix<double> k_ib = sparse_block(stiffness, p.interior, p.boundary);
-  return solve_with(k_ii_factor, k_ii, -Eigen::MatrixXd(k_ib), interior_stiffness_name(p)).value;
+                                 const Eigen::SparseMatrix<double>& k_ii,
+                                 const CyclicBoundary* cyclic) {
+  const InteriorSolve solve = [&](const Eigen::MatrixXd& b) {
+    return solve_with(k_ii_factor, k_ii, b, interior_stiffness_name(p)).value;
+  };
+  if (cyclic != nullptr) return turned_constraint_modes(stiffness, p, *cyclic, solve);
+  return solve(-Eigen::MatrixXd(sparse_block(stiffness, p.interior, p.boundary)));
 }
 
 void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
                   const Eigen::SparseMatrix<double>& mass, int n_boundary,
                   int first_boundary_position, std::chrono::steady_clock::time_point start,
-                  ReducedBasis& basis) {
+                  ReducedBasis& basis, const CyclicBoundary* cyclic) {
   for (int b = 0; b < n_boundary; ++b)
     basis.boundary_position.push_back(first_boundary_position + b);
   // K^T T, not K T: equal for the symmetric K and M of a component
@@ -188,11 +195,19 @@ void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
   std::atomic<int> next{0};
   std::atomic<bool> failed{false};
   const auto worker = [&] {
-    for (int job = next++; job < 2 && !failed; job = next++)
-      (job == 0 ? k : m) = t.transpose() * transpose_product(job == 0 ? stiffness : mass, t);
+    for (int job = next++; job < 2 && !failed; job = next++) {
+      const Eigen::SparseMatrix<double>& a = job == 0 ? stiffness : mass;
+      (job == 0 ? k : m) = cyclic != nullptr
+                               ? cyclic_projection(a, t, first_boundary_position, *cyclic)
+                               : Eigen::MatrixXd(t.transpose() * transpose_product(a, t));
+    }
   };
-  // Below ~2e7 multiply-adds (n r^2) a thread costs more than it saves.
-  const double work = static_cast<double>(t.rows()) * static_cast<double>(t.cols()) * t.cols();
+  // Below ~2e7 multiply-adds (n r^2, or n r (eta + 3 n_r) by the turns) a
+  // thread costs more than it saves.
+  const double rows = cyclic != nullptr ? first_boundary_position +
+                                              3.0 * cyclic->orbits.n_representatives()
+                                        : static_cast<double>(t.cols());
+  const double work = static_cast<double>(t.rows()) * static_cast<double>(t.cols()) * rows;
   run_on_threads(work >= 2e7 && std::thread::hardware_concurrency() >= 2 ? 2 : 1, worker, failed);
   basis.stiffness = 0.5 * (k + k.transpose());
   basis.mass = 0.5 * (m + m.transpose());
@@ -201,15 +216,16 @@ void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
 }
 
 ReducedBasis guyan(const Eigen::SparseMatrix<double>& stiffness,
-                   const Eigen::SparseMatrix<double>& mass, const Partition& p) {
+                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                   const CyclicBoundary* cyclic) {
   const auto start = std::chrono::steady_clock::now();
   ReducedBasis basis;
   basis.method = "guyan";
-  const Eigen::MatrixXd psi = constraint_modes(stiffness, p);
+  const Eigen::MatrixXd psi = constraint_modes(stiffness, p, cyclic);
   basis.transformation =
       place_rows(p.n(), p.interior, psi) +
       place_rows(p.n(), p.boundary, Eigen::MatrixXd::Identity(p.n_boundary(), p.n_boundary()));
-  finish_basis(stiffness, mass, p.n_boundary(), 0, start, basis);
+  finish_basis(stiffness, mass, p.n_boundary(), 0, start, basis, cyclic);
   return basis;
 }
 

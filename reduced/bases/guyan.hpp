@@ -17,6 +17,7 @@
 #include "modal_analysis.hpp"
 #include "partition.hpp"
 #include "reduced_basis.hpp"
+#include "turned_constraint_modes.hpp"
 
 namespace rsi {
 
@@ -63,13 +64,16 @@ AccurateMatrix solve_with(const CholmodShiftInvert& factor, const Eigen::SparseM
 /// Psi_I = -K_II^-1 K_IB (n_I x n_B), by solve_positive_definite: rounded
 /// to the last bit, so it does not depend on the factor's round-off. Throws
 /// ReductionError naming K_II if it is singular or indefinite (the boundary
-/// does not hold the part against every rigid motion).
-Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p);
+/// does not hold the part against every rigid motion). With `cyclic`, one
+/// sector's solved and the others turned (turned_constraint_modes.hpp).
+Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
+                                 const CyclicBoundary* cyclic = nullptr);
 
 /// The same on K_II's factor (k_ii = K_II, as factorized).
 Eigen::MatrixXd constraint_modes(const Eigen::SparseMatrix<double>& stiffness, const Partition& p,
                                  const CholmodShiftInvert& k_ii_factor,
-                                 const Eigen::SparseMatrix<double>& k_ii);
+                                 const Eigen::SparseMatrix<double>& k_ii,
+                                 const CyclicBoundary* cyclic = nullptr);
 
 /// The name and remedy of K_II in the messages of constraint_modes.
 std::string interior_stiffness_name(const Partition& p);
@@ -78,13 +82,16 @@ extern const char* const interior_stiffness_remedy;
 /// Completes a basis whose transformation is set: the n_boundary boundary
 /// coordinates sit at q[first_boundary_position ...], K^ = T^T K T and
 /// M^ = T^T M T (symmetrized: the products are symmetric up to round-off),
-/// and the build time since `start`.
+/// and the build time since `start`. With `cyclic` (T a CB basis of its
+/// boundary, first_boundary_position its eta modes), the products by the
+/// turns (cyclic_projection).
 void finish_basis(const Eigen::SparseMatrix<double>& stiffness,
                   const Eigen::SparseMatrix<double>& mass, int n_boundary,
                   int first_boundary_position, std::chrono::steady_clock::time_point start,
-                  ReducedBasis& basis);
+                  ReducedBasis& basis, const CyclicBoundary* cyclic = nullptr);
 
 ReducedBasis guyan(const Eigen::SparseMatrix<double>& stiffness,
-                   const Eigen::SparseMatrix<double>& mass, const Partition& p);
+                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
+                   const CyclicBoundary* cyclic = nullptr);
 
 } // namespace rsi

@@ -44,6 +44,20 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
   return reduce(stiffness, mass, boundary, method, modes);
 }
 
+ReducedBasis reduce(const Component& c, const std::string& method, int modes, int boundary_modes) {
+  // Counts out of range and other methods: refused or built as without the turns.
+  const bool turned = method == "cc" || (method == "cb" && boundary_modes == 0) ||
+                      (method == "guyan" && modes == 0 && boundary_modes == 0);
+  if (c.cyclic_bases == 0 || !turned)
+    return reduce(c.stiffness, c.mass, c.boundary, method, modes, boundary_modes);
+  const Partition p = make_partition(c.n_dofs(), c.boundary);
+  const CyclicBoundary cyclic = cyclic_boundary(c, c.cyclic_bases, p);
+  if (method == "cc")
+    return characteristic_constraint(c.stiffness, c.mass, p, modes, boundary_modes, &cyclic);
+  if (method == "cb") return craig_bampton(c.stiffness, c.mass, p, modes, &cyclic);
+  return guyan(c.stiffness, c.mass, p, &cyclic);
+}
+
 ReducedBasis reduce_bladed_disk(const BladedDisk& bd, const std::string& method, int modes) {
   return reduce(bd.stiffness, bd.mass, bd.boundary, method, modes);
 }

@@ -9,6 +9,7 @@
 #include <Eigen/SparseCore>
 
 #include "bladed_disk.hpp"
+#include "component.hpp"
 #include "mode_selection.hpp"
 #include "reduced_basis.hpp"
 
@@ -28,6 +29,12 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
 ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
                     const Eigen::SparseMatrix<double>& mass, const std::vector<int>& boundary,
                     const std::string& method, int modes, int boundary_modes);
+
+/// reduce() with cc of component c's K, M and boundary; a component with
+/// cyclic_bases builds cb, cc and guyan by its turns (CyclicBoundary), ccm
+/// and macneal as reduce(). Throws ReductionError as reduce() and
+/// cyclic_boundary().
+ReducedBasis reduce(const Component& c, const std::string& method, int modes, int boundary_modes);
 
 /// reduce() of the bladed disk with its tip boundary.
 ReducedBasis reduce_bladed_disk(const BladedDisk& bladed_disk, const std::string& method,

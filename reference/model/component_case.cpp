@@ -788,6 +788,19 @@ ComponentCase parse_component_case(const json& document, const std::string& path
                 "needs ccx to run the deck under the centrifugal load, and "
                 "source.calculix_matrices names matrices already written: drop one of them");
   }
+  comp.claim("cyclic_bases");
+  if (cj.contains("cyclic_bases")) {
+    const json& cyclic = cj.at("cyclic_bases");
+    if (!cyclic.is_boolean())
+      comp.fail(comp.full("cyclic_bases"),
+                "must be true or false, got " + cyclic.dump().substr(0, 80));
+    c.cyclic_bases = cyclic.get<bool>();
+    if (c.cyclic_bases && c.source != ComponentSource::gmsh_bladed_disk &&
+        c.source != ComponentSource::calculix_sector)
+      comp.fail(comp.full("cyclic_bases"),
+                "needs a cyclic model, a gmsh_bladed_disk or calculix_sector source (its "
+                "sector count says how the model turns onto itself)");
+  }
   c.units = string_value(comp, cj, "units");
   comp.claim("rotation_axis");
   if (cj.contains("rotation_axis")) {
@@ -1010,6 +1023,10 @@ Component load_component(const ComponentCase& c, const ComponentLoadOptions& opt
   check_frequency_scale(component, c, options);
   component.units = c.units;
   component.rotation_axis = c.rotation_axis;
+  if (c.cyclic_bases)
+    component.cyclic_bases = c.source == ComponentSource::gmsh_bladed_disk
+                                 ? c.gmsh_bladed_disk.sectors
+                                 : c.sectors;
   if (c.lumped_mass) component.mass = hrz_lumped_mass(component);
   return component;
 }

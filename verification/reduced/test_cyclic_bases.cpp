@@ -1,0 +1,290 @@
+// Bases of a cyclic component by its turns (reduced/bases/cyclic_symmetry.hpp,
+// turned_constraint_modes.hpp; issue 27's bases of the default disk), on the
+// 3D bladed disk's CI model (data/cases/bladed-disk3d-ci.json: 6 sectors,
+// 29,484 dofs, 288 boundary dofs; gmsh + ccx, cached in RSI_CCX_CACHE,
+// default build/ccx-cache). Skipped, saying why, without gmsh or ccx.
+//
+// What is checked against what (u = 2^-53, the unit roundoff):
+// - the turn: P maps the model's nodes onto its nodes, N turns are the
+//   identity, and P^T K P - K, P^T M P - K are the model's rounding only
+//   (printed; bound below);
+// - the turned constraint modes solve the static problem K_II psi + K_IB e
+//   = 0: the residual (compensated, accurate_solve.hpp) of boundary dof
+//   (t, c), t = P^k r, is sum_d R_cd P^k (K phi_d + E_k phi_d) on the
+//   interior rows, E_k = P^kT K P^k - K, phi_d the representative's field
+//   solved to the last bit (|K phi_d|_I <= a few u |K| |phi_d|): bounded by
+//   sum_d |R_cd| |P^k| (|E_k| |phi_d| + gamma |K| |phi_d|), gamma = (m + 10) u,
+//   m the most nonzeros of a row of K (the turn's 3-term sums, the
+//   residual's products);
+// - K^ and M^ by the turns equal the direct products T^T A T of the same T:
+//   the block of boundary triples (t, t') is R^k (T^T A T)_(r, P^-k t')
+//   R^kT, exact for P^kT A P^k = A and T's turned columns exactly turned;
+//   the difference is R^k Psi_r^T E_k Psi_t'' R^kT, entrywise at most
+//   |R^k| |Psi_r|^T |E_k| |Psi_t''| |R^k|^T, plus the rounding of the turned
+//   columns (3 u |T|, twice) and of both products (n-term sums:
+//   gamma_n |T|^T |A| |T| each); the rows of the fixed-interface modes are
+//   the same product, and the boundary's columns against them its
+//   transpose (the direct product's asymmetry, within the same gamma_n).
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "accurate_solve.hpp"
+#include "calculix_matrices.hpp"
+#include "calculix_run.hpp"
+#include "child_process.hpp"
+#include "component_case.hpp"
+#include "craig_bampton.hpp"
+#include "cyclic_symmetry.hpp"
+#include "partition.hpp"
+#include "reduction.hpp"
+#include "turned_constraint_modes.hpp"
+
+namespace rsi {
+namespace {
+
+constexpr double u = std::numeric_limits<double>::epsilon() / 2;
+const std::string ci_case = RSI_SOURCE_DIR "/data/cases/bladed-disk3d-ci.json";
+
+std::string cache_dir() {
+  const char* env = std::getenv("RSI_CCX_CACHE");
+  return env && *env ? env : RSI_BINARY_DIR "/ccx-cache";
+}
+
+std::string missing() {
+  if (!executable_on_path("gmsh")) return "gmsh is not on PATH (Debian package gmsh)";
+  try {
+    find_ccx();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return {};
+}
+
+ComponentCase ci_component_case() {
+  std::ifstream in(ci_case);
+  return parse_component_case(nlohmann::json::parse(in), ci_case);
+}
+
+Eigen::SparseMatrix<double> absolute(const Eigen::SparseMatrix<double>& a) {
+  return a.cwiseAbs();
+}
+
+/// Most nonzeros of a column of the symmetric a.
+int widest(const Eigen::SparseMatrix<double>& a) {
+  int m = 0;
+  for (int j = 0; j < a.outerSize(); ++j)
+    m = std::max(m, static_cast<int>(a.outerIndexPtr()[j + 1] - a.outerIndexPtr()[j]));
+  return m;
+}
+
+/// P^kT A P^k - A.
+Eigen::SparseMatrix<double> turned_difference(const CyclicSymmetry& s, int k,
+                                              const Eigen::SparseMatrix<double>& a) {
+  const Eigen::SparseMatrix<double> p = turn_matrix(s, k, static_cast<int>(a.rows()));
+  return Eigen::SparseMatrix<double>(p.transpose() * a * p) - a;
+}
+
+class CyclicBases : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    s_missing = missing();
+    if (!s_missing.empty()) return;
+    try {
+      ComponentCase cc = ci_component_case();
+      s_model = std::make_unique<Component>(load_component(cc, {"", cache_dir()}));
+      s_partition =
+          std::make_unique<Partition>(make_partition(s_model->n_dofs(), s_model->boundary));
+      s_cyclic = std::make_unique<CyclicBoundary>(
+          cyclic_boundary(*s_model, cc.gmsh_bladed_disk.sectors, *s_partition));
+      s_basis = std::make_unique<ReducedBasis>(
+          craig_bampton(s_model->stiffness, s_model->mass, *s_partition, 20, s_cyclic.get()));
+    } catch (const std::exception& e) {
+      s_error = e.what();
+    }
+  }
+  static void TearDownTestSuite() {
+    s_basis.reset();
+    s_cyclic.reset();
+    s_partition.reset();
+    s_model.reset();
+  }
+  void SetUp() override {
+    if (!s_missing.empty()) GTEST_SKIP() << "not run: " << s_missing;
+    ASSERT_TRUE(s_basis) << "building the cyclic basis failed: " << s_error;
+  }
+  static inline std::string s_missing;
+  static inline std::string s_error;
+  static inline std::unique_ptr<Component> s_model;
+  static inline std::unique_ptr<Partition> s_partition;
+  static inline std::unique_ptr<CyclicBoundary> s_cyclic;
+  static inline std::unique_ptr<ReducedBasis> s_basis;
+};
+
+// The turn is a permutation of the nodes with dofs, N turns the identity
+// (cyclic_symmetry checks both); the boundary falls in 16-node orbits of 6.
+// The model's asymmetry is printed: ccx integrates each sector's elements
+// at coordinates turned in floating point, so P^T K P = K holds to the
+// rounding of its element integration only (bounded in the next tests, not
+// here: their bounds carry it).
+TEST_F(CyclicBases, TurnMapsTheDiskOntoItself) {
+  const CyclicSymmetry& s = s_cyclic->symmetry;
+  std::vector<int> hit(s.triples.size(), 0);
+  for (int t : s.turned)
+    ++hit[static_cast<size_t>(t)];
+  for (size_t t = 0; t < hit.size(); ++t)
+    ASSERT_EQ(hit[t], 1) << "triple " << t;
+  EXPECT_EQ(s.triples.size() * 3, static_cast<size_t>(s_model->n_dofs()));
+  EXPECT_EQ(s_cyclic->orbits.n_representatives() * 3 * s.sectors, s_partition->n_boundary());
+  const double dk = relative_asymmetry(s, s_model->stiffness);
+  const double dm = relative_asymmetry(s, s_model->mass);
+  std::printf("turn of %zu nodes, %d boundary orbits of %d; max|P^T K P - K| / max|K| = %.3e, "
+              "max|P^T M P - M| / max|M| = %.3e\n",
+              s.triples.size(), s_cyclic->orbits.n_representatives(), s.sectors, dk, dm);
+  // Another sector count is not a symmetry of the model: refused naming a node.
+  try {
+    cyclic_symmetry(*s_model, 7);
+    ADD_FAILURE() << "a 6-sector disk taken as 7-fold cyclic";
+  } catch (const ReductionError& e) {
+    EXPECT_NE(std::string(e.what()).find("not 7-fold cyclic"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(CyclicBases, TurnedConstraintModesSolveTheStaticProblem) {
+  const Component& c = *s_model;
+  const Partition& p = *s_partition;
+  const CyclicBoundary& cyc = *s_cyclic;
+  const BoundaryOrbits& o = cyc.orbits;
+  const int eta = 20;
+  const Eigen::MatrixXd psi =
+      take_rows(s_basis->transformation.rightCols(p.n_boundary()), p.interior);
+  const Eigen::SparseMatrix<double> k_ii = sparse_block(c.stiffness, p.interior, p.interior);
+  const Eigen::MatrixXd k_ib(sparse_block(c.stiffness, p.interior, p.boundary));
+  const Eigen::MatrixXd r = compensated_residual(k_ii, {}, {-k_ib, {}}, psi);
+  const double gamma = (widest(c.stiffness) + 10) * u;
+  // The representatives' whole fields phi (as T holds them).
+  const std::vector<int> reps = o.representative_positions();
+  Eigen::MatrixXd phi(c.n_dofs(), static_cast<Eigen::Index>(reps.size()));
+  for (size_t i = 0; i < reps.size(); ++i)
+    phi.col(static_cast<Eigen::Index>(i)) = s_basis->transformation.col(eta + reps[i]);
+  const Eigen::MatrixXd abs_k_phi = absolute(c.stiffness) * phi.cwiseAbs();
+  double worst = 0.0, worst_turned = 0.0;
+  for (int k = 0; k < o.sectors; ++k) {
+    const Eigen::SparseMatrix<double> e = turned_difference(cyc.symmetry, k, c.stiffness);
+    const Eigen::MatrixXd per_field = absolute(e) * phi.cwiseAbs() + gamma * abs_k_phi;
+    const Eigen::MatrixXd turned =
+        take_rows(absolute(turn_matrix(cyc.symmetry, k, c.n_dofs())) * per_field, p.interior);
+    const Eigen::Matrix3d rot = turn_rotation(cyc.symmetry, k).cwiseAbs();
+    for (int rep = 0; rep < o.n_representatives(); ++rep)
+      for (int comp = 0; comp < 3; ++comp) {
+        const int j =
+            o.position[static_cast<size_t>(rep)][static_cast<size_t>(k)][static_cast<size_t>(comp)];
+        const Eigen::VectorXd bound = rot(comp, 0) * turned.col(3 * rep) +
+                                      rot(comp, 1) * turned.col(3 * rep + 1) +
+                                      rot(comp, 2) * turned.col(3 * rep + 2);
+        const double ratio =
+            (r.col(j).cwiseAbs().array() / bound.array().max(std::numeric_limits<double>::min()))
+                .maxCoeff();
+        worst = std::max(worst, ratio);
+        if (k > 0) worst_turned = std::max(worst_turned, r.col(j).cwiseAbs().maxCoeff());
+      }
+  }
+  std::printf("K_II psi + K_IB: worst residual / bound %.3e over %d columns (%d solved); largest "
+              "turned residual %.3e N/mm, ||K||_max %.3e\n",
+              worst, p.n_boundary(), static_cast<int>(reps.size()), worst_turned,
+              c.stiffness.coeffs().cwiseAbs().maxCoeff());
+  EXPECT_LE(worst, 1.0);
+}
+
+void expect_projection_is_direct(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixXd& t,
+                                 const Eigen::MatrixXd& by_turns, int eta,
+                                 const CyclicBoundary& cyc, const char* name) {
+  const Eigen::MatrixXd direct = t.transpose() * (a * t);
+  const Eigen::MatrixXd abs_t = t.cwiseAbs();
+  const Eigen::MatrixXd scale = abs_t.transpose() * (absolute(a) * abs_t);
+  const double gamma = (static_cast<double>(t.rows()) + widest(a) + 12) * u;
+  const BoundaryOrbits& o = cyc.orbits;
+  const std::vector<int> reps = o.representative_positions();
+  Eigen::MatrixXd abs_reps(t.rows(), static_cast<Eigen::Index>(reps.size()));
+  for (size_t i = 0; i < reps.size(); ++i)
+    abs_reps.col(static_cast<Eigen::Index>(i)) = abs_t.col(eta + reps[i]);
+  // |Psi_r|^T |E_k| |T|, turn by turn: the asymmetry's share, entrywise.
+  std::vector<Eigen::MatrixXd> asym(static_cast<size_t>(o.sectors));
+  for (int k = 0; k < o.sectors; ++k)
+    asym[static_cast<size_t>(k)] =
+        abs_reps.transpose() * (absolute(turned_difference(cyc.symmetry, k, a)) * abs_t);
+  double worst = 0.0, largest = 0.0, largest_bound = 0.0;
+  const Eigen::Index r = t.cols();
+  for (Eigen::Index i = 0; i < r; ++i)
+    for (Eigen::Index j = 0; j < r; ++j) {
+      double bound = 2.0 * gamma * scale(i, j);
+      if (i >= eta && j >= eta) {
+        // Row triple t = P^k rep, column triple t' with t'' = P^-k t'.
+        const size_t bi = static_cast<size_t>(i - eta), bj = static_cast<size_t>(j - eta);
+        const int k = o.turns[bi];
+        const auto& back =
+            o.position[static_cast<size_t>(o.rep[bj])]
+                      [static_cast<size_t>((o.turns[bj] - k + o.sectors) % o.sectors)];
+        const Eigen::Matrix3d rot = turn_rotation(cyc.symmetry, k).cwiseAbs();
+        double e = 0.0;
+        for (int d = 0; d < 3; ++d)
+          for (int f = 0; f < 3; ++f)
+            e += rot(o.component[bi], d) *
+                 asym[static_cast<size_t>(k)](3 * o.rep[bi] + d,
+                                              eta + back[static_cast<size_t>(f)]) *
+                 rot(o.component[bj], f);
+        bound += e + 12.0 * u * scale(i, j);
+      }
+      const double diff = std::abs(by_turns(i, j) - direct(i, j));
+      largest = std::max(largest, diff);
+      largest_bound = std::max(largest_bound, bound);
+      worst = std::max(worst, diff / bound);
+    }
+  const double size = direct.cwiseAbs().maxCoeff();
+  std::printf("%s by the turns against T^T A T (%ld x %ld): worst |difference| / bound %.3e; "
+              "largest difference %.3e, largest bound %.3e, of max |T^T A T| = %.3e\n",
+              name, static_cast<long>(r), static_cast<long>(r), worst, largest / size,
+              largest_bound / size, size);
+  EXPECT_LE(worst, 1.0) << name;
+}
+
+TEST_F(CyclicBases, ProjectionByTurnsIsTheDirectProduct) {
+  const Eigen::MatrixXd& t = s_basis->transformation;
+  const int eta = 20;
+  expect_projection_is_direct(s_model->stiffness, t,
+                              cyclic_projection(s_model->stiffness, t, eta, *s_cyclic), eta,
+                              *s_cyclic, "K^");
+  expect_projection_is_direct(s_model->mass, t, cyclic_projection(s_model->mass, t, eta, *s_cyclic),
+                              eta, *s_cyclic, "M^");
+}
+
+// The case key: a cyclic source only (exit 2 in the CLI, as every case error).
+TEST(CyclicBasesCase, KeyNeedsACyclicSource) {
+  const std::string blade = RSI_SOURCE_DIR "/data/cases/blade3d.json";
+  std::ifstream in(blade);
+  nlohmann::json j = nlohmann::json::parse(in);
+  j["component"]["cyclic_bases"] = true;
+  try {
+    parse_component_case(j, blade);
+    ADD_FAILURE() << "cyclic_bases accepted on a blade";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("component.cyclic_bases"), std::string::npos) << e.what();
+  }
+  std::ifstream in2(ci_case);
+  nlohmann::json d = nlohmann::json::parse(in2);
+  d["component"]["cyclic_bases"] = "yes";
+  EXPECT_THROW(parse_component_case(d, ci_case), std::exception);
+  d["component"]["cyclic_bases"] = true;
+  EXPECT_TRUE(parse_component_case(d, ci_case).cyclic_bases);
+}
+
+} // namespace
+} // namespace rsi
