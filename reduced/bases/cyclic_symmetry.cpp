@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 
 #include "reduced_basis.hpp"
@@ -71,17 +72,25 @@ CyclicSymmetry cyclic_symmetry(const Component& c, int sectors) {
   std::vector<int> node_of;
   for (const ComponentNode& n : c.nodes) {
     const auto t = by_node.find(n.id);
-    if (t == by_node.end()) continue;
+    if (t == by_node.end() || n.generated) continue;
     for (int d : t->second)
       if (d < 0)
         throw ReductionError("cyclic bases: " + node_name(c, n.id) +
                              " lacks one of ux, uy, uz (a node held in one direction only "
                              "is not held in that direction once turned)");
-    triple_at.emplace(place_key(n.x, q), static_cast<int>(s.triples.size()));
+    if (!triple_at.emplace(place_key(n.x, q), static_cast<int>(s.triples.size())).second)
+      throw ReductionError("cyclic bases: " + node_name(c, n.id) +
+                           " lies where another node with dofs lies (within 1e-6 of the "
+                           "model's size)");
     s.triples.push_back(t->second);
     x.push_back(n.x);
     node_of.push_back(n.id);
   }
+  // Every dof in a triple: the turn then moves every row (turn_fields).
+  if (3 * s.triples.size() != static_cast<size_t>(c.n_dofs()))
+    throw ReductionError("cyclic bases: the component '" + c.name + "' has " +
+                         std::to_string(c.n_dofs()) + " dofs, not the ux, uy, uz of its " +
+                         std::to_string(s.triples.size()) + " nodes with dofs");
   const Eigen::Matrix3d r = turn_rotation(s, 1);
   s.turned.assign(s.triples.size(), -1);
   for (size_t t = 0; t < s.triples.size(); ++t) {
@@ -96,10 +105,9 @@ CyclicSymmetry cyclic_symmetry(const Component& c, int sectors) {
         }
     if (s.turned[t] < 0)
       throw ReductionError("cyclic bases: " + node_name(c, node_of[t]) + " turned by 2 pi / " +
-                           std::to_string(sectors) +
-                           " about the rotation axis meets no node with dofs: the component "
-                           "is not " +
-                           std::to_string(sectors) + "-fold cyclic");
+                           std::to_string(sectors) + " about the rotation axis meets no node " +
+                           "with dofs: the component is not " + std::to_string(sectors) +
+                           "-fold cyclic");
   }
   const std::vector<int> round_trip = turned_by(s, sectors);
   for (size_t t = 0; t < round_trip.size(); ++t)
@@ -161,6 +169,9 @@ std::vector<int> BoundaryOrbits::representative_positions() const {
 }
 
 BoundaryOrbits boundary_orbits(const CyclicSymmetry& s, const Partition& p) {
+  if (static_cast<size_t>(p.n()) != 3 * s.triples.size())
+    throw std::invalid_argument("boundary_orbits: a partition of " + std::to_string(p.n()) +
+                                " dofs for a turn of " + std::to_string(3 * s.triples.size()));
   const std::vector<int> triple = triple_of_dofs(s, p.n());
   std::vector<int> position_of_dof(static_cast<size_t>(p.n()), -1);
   for (int j = 0; j < p.n_boundary(); ++j)
@@ -187,7 +198,8 @@ BoundaryOrbits boundary_orbits(const CyclicSymmetry& s, const Partition& p) {
               "cyclic bases: boundary dof " + std::to_string(dof) +
               (at < 0 ? " turned " + std::to_string(k) +
                             " times lands on a node whose ux, uy, uz are not all boundary dofs"
-                      : " shares its turns with another boundary node") +
+                      : " comes back onto itself after " + std::to_string(k) +
+                            " turns (a node on the axis)") +
               ": the boundary is not cyclic");
         o.rep[static_cast<size_t>(at)] = r;
         o.turns[static_cast<size_t>(at)] = k;

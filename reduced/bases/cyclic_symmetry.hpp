@@ -11,7 +11,7 @@
 // (relative_asymmetry measures it).
 //
 // What follows for the constraint modes (guyan.hpp): the mode of boundary
-// node P^k(r), direction e_c, is P^k sum_d (R^-k)_dc psi_(r,d), the turned
+// node P^k(r), direction e_c, is P^k sum_d (R^k)_cd psi_(r,d), the turned
 // combination of the modes of the representative node r (a unit
 // displacement along R^k R^-k e_c = e_c there, zero at every other boundary
 // node, no interior load). One sector's boundary nodes are solved for; the
@@ -36,9 +36,10 @@ struct CyclicSymmetry {
 };
 
 /// The turn of component `c` about its rotation axis by 2 pi / sectors.
-/// Throws ReductionError naming the node when a node with dofs lacks one of
-/// ux, uy, uz or its turned position holds no node with dofs within 1e-6 of
-/// the model's size (not `sectors`-fold cyclic), or when N turns do not
+/// Throws ReductionError for sectors < 2, a dof other than ux, uy, uz, and,
+/// naming the node, a node with dofs that lacks one of ux, uy, uz, lies on
+/// another, or whose turned position holds no node with dofs within 1e-6
+/// of the model's size (not `sectors`-fold cyclic), or when N turns do not
 /// bring every node back.
 CyclicSymmetry cyclic_symmetry(const Component& c, int sectors);
 
@@ -67,8 +68,9 @@ struct BoundaryOrbits {
   std::vector<int> representative_positions() const;
 };
 
-/// Throws ReductionError when a boundary dof is not part of a whole
-/// boundary triple, or a turned boundary node is not on the boundary.
+/// Throws ReductionError when a turned boundary node is not a whole
+/// boundary triple, or comes back in fewer than N turns (on the axis);
+/// std::invalid_argument for a partition of another size.
 BoundaryOrbits boundary_orbits(const CyclicSymmetry& s, const Partition& p);
 
 } // namespace rsi
