@@ -13,6 +13,7 @@
 #include "energy_resolution.hpp"
 #include "guyan.hpp"
 #include "modal_analysis.hpp"
+#include "turned_residual_flexibility.hpp"
 
 namespace rsi {
 namespace {
@@ -30,7 +31,8 @@ const char* const stiffness_remedy =
 
 FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
                                       const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                      int count, const std::string& name) {
+                                      int count, const std::string& name,
+                                      const std::vector<int>* flexibility_columns) {
   const int n = p.n();
   const int nb = p.n_boundary();
   FreeInterfacePool pool;
@@ -75,18 +77,47 @@ FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffne
     }
     return pool;
   }
-  const Eigen::MatrixXd unit = place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
   const std::string k_name = name + ": the bladed-disk stiffness K (" + square_size(n) + ")";
+  const auto unit = [&] {
+    if (flexibility_columns == nullptr)
+      return place_rows(n, p.boundary, Eigen::MatrixXd::Identity(nb, nb));
+    Eigen::MatrixXd e =
+        Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(flexibility_columns->size()));
+    for (Eigen::Index i = 0; i < e.cols(); ++i)
+      e(p.boundary[static_cast<size_t>((*flexibility_columns)[static_cast<size_t>(i)])], i) = 1.0;
+    return e;
+  };
   if (count > 0 && shares_factor(n)) {
     const auto factor = factor_positive_definite(stiffness, mass, k_name, stiffness_remedy);
-    pool.flexibility = solve_with(*factor, stiffness, unit, k_name);
+    pool.flexibility = solve_with(*factor, stiffness, unit(), k_name);
     pool.modes = lowest_modes(stiffness, mass, count, *factor);
   } else {
-    pool.flexibility = solve_positive_definite(stiffness, unit, k_name, stiffness_remedy);
+    pool.flexibility = solve_positive_definite(stiffness, unit(), k_name, stiffness_remedy);
     // Many modes of a singular M: the dense (shift-invert) solver.
     if (count > 0) pool.modes = lowest_modes(stiffness, mass, count, few_modes(count, n));
   }
   return pool;
+}
+
+double residual_flexibility_condition(const Eigen::MatrixXd& r_b, int n, const std::string& name) {
+  // R_B is symmetric positive semi-definite in exact arithmetic.
+  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                  0.5 * (r_b + r_b.transpose()), Eigen::EigenvaluesOnly)
+                                  .eigenvalues();
+  const Eigen::Index nb = r_b.rows();
+  const double cond = eig(0) > 0.0 ? eig(nb - 1) / eig(0) : std::numeric_limits<double>::infinity();
+  const double limit = 1.0 / (n * std::numeric_limits<double>::epsilon());
+  if (!(cond < limit)) {
+    std::ostringstream message;
+    message << name
+            << ": the residual flexibility R_B of the boundary set is "
+               "numerically singular, "
+               "cond(R_B) = "
+            << cond << " >= 1/(n eps) = " << limit
+            << "; attachment modes on rotation dofs or too many free modes cause this (paper §5.3)";
+    throw ReductionError(message.str());
+  }
+  return cond;
 }
 
 ResidualFlexibilityTransformation residual_flexibility_transformation(const Partition& p,
@@ -122,23 +153,7 @@ ResidualFlexibilityTransformation residual_flexibility_transformation(const Part
                  take_rows(phi1, p.boundary).transpose();
   }
   const Eigen::MatrixXd r_b = take_rows(r.value, p.boundary);
-
-  // cond(R_B): R_B is symmetric positive semi-definite in exact arithmetic.
-  const Eigen::VectorXd eig = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                  0.5 * (r_b + r_b.transpose()), Eigen::EigenvaluesOnly)
-                                  .eigenvalues();
-  out.cond_rb = eig(0) > 0.0 ? eig(nb - 1) / eig(0) : std::numeric_limits<double>::infinity();
-  const double limit = 1.0 / (n * std::numeric_limits<double>::epsilon());
-  if (!(out.cond_rb < limit)) {
-    std::ostringstream message;
-    message << name
-            << ": the residual flexibility R_B of the boundary set is "
-               "numerically singular, "
-               "cond(R_B) = "
-            << out.cond_rb << " >= 1/(n eps) = " << limit
-            << "; attachment modes on rotation dofs or too many free modes cause this (paper §5.3)";
-    throw ReductionError(message.str());
-  }
+  out.cond_rb = residual_flexibility_condition(r_b, n, name);
   const Eigen::LDLT<Eigen::MatrixXd> r_b_factor(r_b);
   // Columns for q_B: R(:, B) R_B^-1, identity on the boundary rows (exactly,
   // so q_B is u_B); interior rows A_I from R_B^T A_I^T = R_I^T, refined to the
@@ -210,9 +225,20 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
 
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                  int psi) {
+                                  int psi, const CyclicBoundary* cyclic) {
   check_free_interface_count(p, psi);
   const auto start = std::chrono::steady_clock::now();
+  if (cyclic != nullptr && few_modes(psi, p.n()) == ModalSolver::sparse) {
+    const char* const name = "Craig-Chang-Martinez";
+    const std::vector<int> representatives = cyclic->orbits.representative_positions();
+    ReducedBasis basis = turned_residual_flexibility(
+        stiffness, mass, p, free_interface_pool(stiffness, mass, p, psi, name, &representatives),
+        *cyclic, name);
+    basis.method = "ccm";
+    basis.build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return basis;
+  }
   const FreeInterfacePool pool =
       free_interface_pool(stiffness, mass, p, psi, "Craig-Chang-Martinez");
   std::vector<int> kept(psi);

@@ -51,14 +51,23 @@ struct FreeInterfacePool {
   Modes modes;   ///< ascending; every mode when `complete`, else the `count` lowest
   int count = 0; ///< the candidates are modes 0 .. count-1
   bool complete = false;
-  AccurateMatrix flexibility; ///< K^-1 E_B, n x n_B (only when not complete)
+  AccurateMatrix flexibility; ///< K^-1 E_B, n x n_B (only when not complete; see below)
 };
 
 /// Throws ReductionError, its message starting with `name`, for a singular
-/// or indefinite K. `count` in [0, n - n_B] (not checked here).
+/// or indefinite K. `count` in [0, n - n_B] (not checked here). With
+/// `flexibility_columns` (boundary positions), the sparse path's
+/// `flexibility` holds K^-1 on those boundary columns only, in that order
+/// (turned_residual_flexibility.hpp turns one sector's).
 FreeInterfacePool free_interface_pool(const Eigen::SparseMatrix<double>& stiffness,
                                       const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                      int count, const std::string& name);
+                                      int count, const std::string& name,
+                                      const std::vector<int>* flexibility_columns = nullptr);
+
+/// cond(R_B) of the boundary's residual flexibility (symmetric part), or
+/// ReductionError, its message starting with `name`, when it is at or above
+/// 1/(n eps): no significant digit left in R_B^-1 (paper §5.3).
+double residual_flexibility_condition(const Eigen::MatrixXd& r_b, int n, const std::string& name);
 
 /// T and cond(R_B) keeping the pool's modes `kept` (ascending indices below
 /// pool.count) as Phi_1. Throws ReductionError, its message starting with
@@ -87,9 +96,14 @@ ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const FreeInterfacePool& pool, const std::vector<int>& kept,
                                   std::chrono::steady_clock::time_point start);
 
-/// The psi lowest free-interface modes.
+struct CyclicBoundary;
+
+/// The psi lowest free-interface modes. With `cyclic` (a cyclic component)
+/// and few modes (few_modes sparse), T and its projections from the turned
+/// constraint modes (turned_residual_flexibility.hpp); otherwise, and
+/// without `cyclic`, as the pool's builder above.
 ReducedBasis craig_chang_martinez(const Eigen::SparseMatrix<double>& stiffness,
                                   const Eigen::SparseMatrix<double>& mass, const Partition& p,
-                                  int psi);
+                                  int psi, const CyclicBoundary* cyclic = nullptr);
 
 } // namespace rsi

@@ -7,6 +7,7 @@
 
 #include "craig_chang_martinez.hpp"
 #include "guyan.hpp"
+#include "turned_residual_flexibility.hpp"
 
 namespace rsi {
 
@@ -53,9 +54,24 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
 }
 
 ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
-                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi) {
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi,
+                     const CyclicBoundary* cyclic) {
   check_macneal_count(p, psi);
   const auto start = std::chrono::steady_clock::now();
+  if (cyclic != nullptr && few_modes(psi, p.n()) == ModalSolver::sparse) {
+    const char* const name = "MacNeal";
+    const std::vector<int> representatives = cyclic->orbits.representative_positions();
+    ReducedBasis basis = turned_residual_flexibility(
+        stiffness, mass, p, free_interface_pool(stiffness, mass, p, psi, name, &representatives),
+        *cyclic, name);
+    basis.method = "macneal";
+    basis.mass.setZero();
+    basis.mass.bottomRightCorner(psi, psi).setIdentity();
+    basis.massless_boundary = true;
+    basis.build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return basis;
+  }
   const FreeInterfacePool pool = free_interface_pool(stiffness, mass, p, psi, "MacNeal");
   std::vector<int> kept(psi);
   std::iota(kept.begin(), kept.end(), 0);

@@ -51,7 +51,9 @@ ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
                      const FreeInterfacePool& pool, const std::vector<int>& kept,
                      std::chrono::steady_clock::time_point start);
 
+/// The psi lowest free-interface modes; `cyclic` as craig_chang_martinez's.
 ReducedBasis macneal(const Eigen::SparseMatrix<double>& stiffness,
-                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi);
+                     const Eigen::SparseMatrix<double>& mass, const Partition& p, int psi,
+                     const CyclicBoundary* cyclic = nullptr);
 
 } // namespace rsi

@@ -46,8 +46,10 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
 
 ReducedBasis reduce(const Component& c, const std::string& method, int modes, int boundary_modes) {
   // Counts out of range and other methods: refused or built as without the turns.
-  const bool turned = method == "cc" || (method == "cb" && boundary_modes == 0) ||
-                      (method == "guyan" && modes == 0 && boundary_modes == 0);
+  const bool turned =
+      method == "cc" ||
+      ((method == "cb" || method == "ccm" || method == "macneal") && boundary_modes == 0) ||
+      (method == "guyan" && modes == 0 && boundary_modes == 0);
   if (c.cyclic_bases == 0 || !turned)
     return reduce(c.stiffness, c.mass, c.boundary, method, modes, boundary_modes);
   const Partition p = make_partition(c.n_dofs(), c.boundary);
@@ -55,6 +57,8 @@ ReducedBasis reduce(const Component& c, const std::string& method, int modes, in
   if (method == "cc")
     return characteristic_constraint(c.stiffness, c.mass, p, modes, boundary_modes, &cyclic);
   if (method == "cb") return craig_bampton(c.stiffness, c.mass, p, modes, &cyclic);
+  if (method == "ccm") return craig_chang_martinez(c.stiffness, c.mass, p, modes, &cyclic);
+  if (method == "macneal") return macneal(c.stiffness, c.mass, p, modes, &cyclic);
   return guyan(c.stiffness, c.mass, p, &cyclic);
 }
 

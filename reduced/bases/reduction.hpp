@@ -32,7 +32,8 @@ ReducedBasis reduce(const Eigen::SparseMatrix<double>& stiffness,
 
 /// reduce() with cc of component c's K, M and boundary; a component with
 /// cyclic_bases builds cb, cc and guyan by its turns (CyclicBoundary), ccm
-/// and macneal as reduce(). Throws ReductionError as reduce() and
+/// and macneal from the turned constraint modes (turned_residual_flexibility;
+/// with many modes, few_modes dense, as reduce()). Throws ReductionError as reduce() and
 /// cyclic_boundary().
 ReducedBasis reduce(const Component& c, const std::string& method, int modes, int boundary_modes);
 

@@ -67,6 +67,16 @@ Eigen::MatrixXd cyclic_projection(const Eigen::SparseMatrix<double>& a, const Ei
   Eigen::MatrixXd out(r, r);
   out.topRows(eta) = rows.topRows(eta);
   out.bottomLeftCorner(r - eta, eta) = rows.topRightCorner(eta, r - eta).transpose();
+  out.bottomRightCorner(r - eta, r - eta) =
+      turned_boundary_block(rows.bottomRightCorner(3 * n_r, r - eta), cyclic);
+  return out;
+}
+
+Eigen::MatrixXd turned_boundary_block(const Eigen::MatrixXd& rows, const CyclicBoundary& cyclic) {
+  const BoundaryOrbits& o = cyclic.orbits;
+  const int n_r = o.n_representatives();
+  const Eigen::Index nb = rows.cols();
+  Eigen::MatrixXd out(nb, nb);
   const int n = o.sectors;
   Eigen::Matrix3d block;
   for (int k = 0; k < n; ++k) {
@@ -81,13 +91,12 @@ Eigen::MatrixXd cyclic_projection(const Eigen::SparseMatrix<double>& a, const Ei
           const auto& col = o.position[static_cast<size_t>(rep2)][static_cast<size_t>(k2)];
           for (int d = 0; d < 3; ++d)
             for (int e = 0; e < 3; ++e)
-              block(d, e) = rows(eta + 3 * rep + d, eta + back[static_cast<size_t>(e)]);
+              block(d, e) = rows(3 * rep + d, back[static_cast<size_t>(e)]);
           const Eigen::Matrix3d turned =
               k == 0 ? block : Eigen::Matrix3d(turn * block * turn.transpose());
           for (int c = 0; c < 3; ++c)
             for (int c2 = 0; c2 < 3; ++c2)
-              out(eta + row[static_cast<size_t>(c)], eta + col[static_cast<size_t>(c2)]) =
-                  turned(c, c2);
+              out(row[static_cast<size_t>(c)], col[static_cast<size_t>(c2)]) = turned(c, c2);
         }
     }
   }

@@ -55,4 +55,10 @@ Eigen::MatrixXd turned_constraint_modes(const Eigen::SparseMatrix<double>& stiff
 Eigen::MatrixXd cyclic_projection(const Eigen::SparseMatrix<double>& a, const Eigen::MatrixXd& t,
                                   int eta, const CyclicBoundary& cyclic);
 
+/// An n_B x n_B matrix G of the boundary with P^T G P = G (a projection
+/// T^T A T's boundary block, (K^-1)_BB) from the representatives' rows
+/// `rows` (3 n_r x n_B: representative, direction; columns in p.boundary's
+/// order): block (t, t') = R^k G_(r, P^-k t') R^kT for t = P^k r.
+Eigen::MatrixXd turned_boundary_block(const Eigen::MatrixXd& rows, const CyclicBoundary& cyclic);
+
 } // namespace rsi

@@ -55,9 +55,10 @@ struct Component {
   std::vector<ComponentNode> nodes;       ///< every node a dof refers to, ascending id
   std::vector<int> boundary;              ///< dof indices kept physical, in order
   CyclicLayout cyclic;
-  /// N > 0: the case's "cyclic_bases" (an N-sector bladed disk): CB, CC
-  /// and Guyan bases solve one sector's constraint modes and turn them
-  /// (reduced/bases/turned_constraint_modes.hpp); 0: each one solved.
+  /// N > 0: the case's "cyclic_bases" (an N-sector bladed disk): CB, CC,
+  /// Guyan, CCM and MacNeal bases solve one sector's constraint modes and
+  /// turn them (reduced/bases/turned_constraint_modes.hpp,
+  /// turned_residual_flexibility.hpp); 0: each one solved.
   int cyclic_bases = 0;
   std::string units;                      ///< e.g. "N, mm, t, s"
   Eigen::Vector3d rotation_axis = Eigen::Vector3d::UnitZ();

@@ -202,8 +202,9 @@ struct ComponentCase {
   /// (rotating_component.hpp); false: the blade at rest at every speed.
   bool rotation_effects = false;
   /// "component.cyclic_bases" (a gmsh_bladed_disk or calculix_sector
-  /// source): its CB, CC and Guyan bases from one sector's constraint modes,
-  /// turned to the others (Component::cyclic_bases); false: each solved.
+  /// source): its CB, CC, Guyan, CCM and MacNeal bases from one sector's
+  /// constraint modes, turned to the others (Component::cyclic_bases);
+  /// false: each solved.
   bool cyclic_bases = false;
   std::optional<RubbingSetup> rubbing;
   ComponentSweep sweep; ///< empty (no speeds) when the file has no "sweep"

@@ -55,7 +55,6 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -266,16 +265,6 @@ const ReducedBasis& basis(Loaded& l, const std::string& method, int modes) {
   return l.bases.emplace(key, std::move(b)).first->second;
 }
 
-Eigen::MatrixXd boundary_loads(int n_boundary) {
-  std::mt19937 generator(2007);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::MatrixXd loads(n_boundary, 4);
-  for (Eigen::Index j = 0; j < loads.cols(); ++j)
-    for (Eigen::Index i = 0; i < loads.rows(); ++i)
-      loads(i, j) = uniform(generator); // [N]
-  return loads;
-}
-
 void print_mode_row(const char* what, const rows::ModeRow& r) {
   std::printf("%s: %d modes (%s): |Phi^T M Phi - I| %.3e (%.2e of bound); K off-diagonal %.3e "
               "omega_m^2 (%.2e); K diagonal vs omega^2 relative %.3e (%.2e); residual %.3e\n",
@@ -378,7 +367,7 @@ void print_static_row(const char* method, int modes, const rows::StaticRow& r) {
 /// Only the zero-mode bases when `with_modes` is false (M singular).
 void static_boundary_loads(Loaded& l, const Plan& plan, bool with_modes) {
   const rows::Component& c = *l.c;
-  const Eigen::MatrixXd loads = boundary_loads(c.n_boundary());
+  const Eigen::MatrixXd loads = rows::random_boundary_loads(c.n_boundary());
   for (const char* method : {"cb", "ccm", "macneal"})
     for (int modes : plan.static_modes) {
       if (std::string(method) == "macneal" && modes == 0) continue; // psi >= 1
@@ -593,7 +582,8 @@ TEST_F(Blade3dRows, CompleteCraigBamptonIsFull) {
   const double full_seconds = seconds_since(step);
   const rows::CompleteRow r = rows::complete_basis_row(c, cb, full_dense, plan().lowest);
   step = Clock::now();
-  const rows::StaticRow s = rows::static_response(c, cb, boundary_loads(c.n_boundary()));
+  const rows::StaticRow s =
+      rows::static_response(c, cb, rows::random_boundary_loads(c.n_boundary()));
   const double static_seconds = seconds_since(step);
   std::printf("CB %d (every fixed-interface mode, r = %d): eigenvalues vs the full dense ones: "
               "max relative %.3e (%.2e of bound); lowest %d: %.3e, their relative bound %.3e "

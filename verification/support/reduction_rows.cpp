@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 #include <utility>
 
@@ -395,6 +396,16 @@ BlockRow cb_block_diagonal(const Component& c, const ReducedBasis& cb) {
 }
 
 // ------------------------------------------------------ V4: static loads
+
+Eigen::MatrixXd random_boundary_loads(int n_boundary) {
+  std::mt19937 generator(2007);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::MatrixXd loads(n_boundary, 4);
+  for (Eigen::Index j = 0; j < loads.cols(); ++j)
+    for (Eigen::Index i = 0; i < loads.rows(); ++i)
+      loads(i, j) = uniform(generator); // [N]
+  return loads;
+}
 
 StaticRow static_response(const Component& c, const ReducedBasis& basis,
                           const Eigen::Ref<const Eigen::MatrixXd>& boundary_loads) {

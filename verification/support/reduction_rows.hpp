@@ -211,6 +211,10 @@ struct StaticRow {
 StaticRow static_response(const Component& c, const ReducedBasis& basis,
                           const Eigen::Ref<const Eigen::MatrixXd>& boundary_loads);
 
+/// Four boundary loads, entries uniform in [-1, 1] N (mt19937, seed 2007):
+/// the static row's loads on every component.
+Eigen::MatrixXd random_boundary_loads(int n_boundary);
+
 // ------------------------------------------- V4: CB(0) = CCM(0) = Guyan
 
 /// One of CB(0), CCM(0) against Guyan, in the same coordinates q_B.
