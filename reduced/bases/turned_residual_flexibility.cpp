@@ -1,6 +1,8 @@
 #include "turned_residual_flexibility.hpp"
 
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Cholesky>
 
@@ -35,6 +37,11 @@ ReducedBasis turned_residual_flexibility(const Eigen::SparseMatrix<double>& stif
   const int n = p.n();
   const int nb = p.n_boundary();
   const int psi = pool.count;
+  if (pool.complete || pool.flexibility.value.cols() != 3 * cyclic.orbits.n_representatives() ||
+      pool.flexibility.value.rows() != n)
+    throw std::invalid_argument("turned_residual_flexibility: the pool must hold K^-1 on the " +
+                                std::to_string(3 * cyclic.orbits.n_representatives()) +
+                                " representatives' columns (n x 3 n_r), not a complete pool");
   // Psi (boundary rows the identity), S = Psi^T K Psi and Psi^T M Psi, by the turns.
   ReducedBasis out = guyan(stiffness, mass, p, &cyclic);
   out.n_modes = psi;
@@ -57,7 +64,7 @@ ReducedBasis turned_residual_flexibility(const Eigen::SparseMatrix<double>& stif
     out.mode_omega = pool.modes.omega_squared.cwiseSqrt();
   }
   out.cond_rb = residual_flexibility_condition(r_b, n, name);
-  if (pieces != nullptr) *pieces = {out.transformation, {}, {}};
+  if (pieces != nullptr) *pieces = {out.transformation, {}, {}, g};
   if (psi == 0) return out;
 
   // C = D R_B^-1 (R_B symmetric), Y = Phi_1 - Psi Phi_1B, W = [-C, I + C Phi_1B].

@@ -18,10 +18,10 @@
 //   T^T A T = [Psi^T A Psi, 0; 0, 0] + E X W + W^T X^T E^T + W^T (Y^T A Y) W,
 // X = Psi^T A Y, E = [I; 0], need Psi^T A Psi (Guyan's, by the turns) and
 // products with the psi columns of Y only. G is turned from one sector's
-// columns K^-1 e_r (refined solves on K's factor, which the modes use):
-// G = S^-1 from S = Psi^T K Psi would multiply S's asymmetry error by
-// cond(S) (1.6e6 on the CI disk: T then 1.7e-5 off the direct one). Nothing
-// asks the kept modes to be a turn-invariant set: they enter through Y and
+// columns K^-1 e_r (refined solves; on the factor the modes use from
+// block_method_min_dofs on): G = S^-1 from S = Psi^T K Psi would multiply
+// S's turn error by cond(S) (1.6e6 on the CI disk). Nothing asks the kept
+// modes to be a turn-invariant set: they enter through Y and
 // D, never turned.
 //
 // Accuracy: Psi, S and G carry the model's asymmetry under the turn (about
@@ -49,11 +49,14 @@ namespace rsi {
 /// the returned basis: n_modes, requested_modes, candidate_modes,
 /// mode_index, boundary_position; the caller names the method and times
 /// the build. Throws ReductionError, its message starting with `name`, for
-/// a numerically singular R_B (a singular K is the pool's).
+/// a numerically singular R_B (a singular K is the pool's);
+/// std::invalid_argument for a complete pool or one whose flexibility is
+/// not the representatives' 3 n_r columns.
 /// With `pieces`, Psi (n x n_B, boundary rows the identity), Y and W of
-/// T = [Psi, 0] + Y W (Y, W empty without modes), for a caller's bounds.
+/// T = [Psi, 0] + Y W (Y, W empty without modes) and G = (K^-1)_BB as
+/// turned (before R_B symmetrizes it), for a caller's checks.
 struct TurnedResidualPieces {
-  Eigen::MatrixXd psi, y, w;
+  Eigen::MatrixXd psi, y, w, g;
 };
 ReducedBasis turned_residual_flexibility(const Eigen::SparseMatrix<double>& stiffness,
                                          const Eigen::SparseMatrix<double>& mass,

@@ -307,6 +307,85 @@ bool boundary_rows_exact(const ReducedBasis& b, const Partition& p) {
   return rows == expected;
 }
 
+// G = (K^-1)_BB by the turns (turned_residual_flexibility.hpp, from the
+// representatives' refined columns x_(r,d) = K^-1 e_(r,d)):
+// - column t = P^k r of K^-1 E_B turned as the constraint modes, x_t =
+//   sum_d R_cd P^k x_(r,d), solves K x = e_t up to sum_d R_cd P^k (E_k
+//   x_(r,d) + rho_d), E_k = P^kT K P^k - K, |rho_d| <= gamma |K| |x_(r,d)|
+//   (refined to the last bit; gamma = (m + 10) u), plus the turn's 3-term
+//   sums, 3 u |K| |P^k| |x|: the constraint modes' bound above;
+// - G's row t is x_t's boundary rows (G = G^T): each entry the same nine
+//   products R_cd x R_c'e in another order, so within 2 gamma_11 of
+//   sum |R_cd| |x| |R_c'e| <= 2 gamma_11 9 max |x| over the 3 x 3 block.
+void expect_turned_flexibility(const Component& c, const Partition& p, const CyclicBoundary& cyc,
+                               const Eigen::MatrixXd& x_r, const Eigen::MatrixXd& g) {
+  const BoundaryOrbits& o = cyc.orbits;
+  const int n = c.n_dofs();
+  const int nb = p.n_boundary();
+  const double gamma = (widest(c.stiffness) + 10) * u;
+  const Eigen::MatrixXd abs_x = x_r.cwiseAbs();
+  const Eigen::MatrixXd abs_k_x = absolute(c.stiffness) * abs_x;
+  Eigen::MatrixXd x(n, nb), bound(n, nb);
+  for (int k = 0; k < o.sectors; ++k) {
+    const Eigen::MatrixXd turned = k == 0 ? x_r : turn_fields(cyc.symmetry, k, x_r);
+    const Eigen::SparseMatrix<double> abs_turn = absolute(turn_matrix(cyc.symmetry, k, n));
+    const Eigen::MatrixXd per_field =
+        abs_turn *
+            (absolute(turned_difference(cyc.symmetry, k, c.stiffness)) * abs_x + gamma * abs_k_x) +
+        3.0 * u * (absolute(c.stiffness) * (abs_turn * abs_x));
+    const Eigen::Matrix3d rot = turn_rotation(cyc.symmetry, k);
+    for (int rep = 0; rep < o.n_representatives(); ++rep)
+      for (int comp = 0; comp < 3; ++comp) {
+        const int at =
+            o.position[static_cast<size_t>(rep)][static_cast<size_t>(k)][static_cast<size_t>(comp)];
+        x.col(at).setZero();
+        bound.col(at).setZero();
+        for (int d = 0; d < 3; ++d) {
+          x.col(at) += rot(comp, d) * turned.col(3 * rep + d);
+          bound.col(at) += std::abs(rot(comp, d)) * per_field.col(3 * rep + d);
+        }
+      }
+  }
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(n, nb);
+  for (int j = 0; j < nb; ++j)
+    unit(p.boundary[static_cast<size_t>(j)], j) = 1.0;
+  const Eigen::MatrixXd r = compensated_residual(c.stiffness, {}, {unit, {}}, x);
+  const double worst =
+      (r.cwiseAbs().array() / bound.array().max(std::numeric_limits<double>::min())).maxCoeff();
+  // G's rows against x_t's boundary rows, block by block.
+  const Eigen::MatrixXd g_test = take_rows(x, p.boundary).transpose();
+  double worst_g = 0.0;
+  const auto at = [&](int rep, int k, int comp) {
+    return o.position[static_cast<size_t>(rep)][static_cast<size_t>(k)][static_cast<size_t>(comp)];
+  };
+  for (int k = 0; k < o.sectors; ++k)
+    for (int rep = 0; rep < o.n_representatives(); ++rep)
+      for (int rep2 = 0; rep2 < o.n_representatives(); ++rep2)
+        for (int k2 = 0; k2 < o.sectors; ++k2) {
+          // Row triple P^k rep, column triple P^k2 rep2, turned back by k.
+          const int back = (k2 - k + o.sectors) % o.sectors;
+          double block_max = 0.0;
+          for (int d = 0; d < 3; ++d)
+            for (int e = 0; e < 3; ++e)
+              block_max = std::max(
+                  block_max,
+                  std::abs(x_r(p.boundary[static_cast<size_t>(at(rep2, back, e))], 3 * rep + d)));
+          const double limit =
+              std::max(2.0 * 11.0 * u * 9.0 * block_max, std::numeric_limits<double>::min());
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) {
+              const int row = at(rep, k, a), col = at(rep2, k2, b);
+              worst_g = std::max(worst_g, std::abs(g(row, col) - g_test(row, col)) / limit);
+            }
+        }
+  std::printf("K^-1 E_B by the turns: worst |K x_t - e_t| / bound %.3e over %d columns (%d "
+              "solved); G against the turned columns' boundary rows: worst |difference| / bound "
+              "%.3e\n",
+              worst, nb, static_cast<int>(x_r.cols()), worst_g);
+  EXPECT_LE(worst, 1.0);
+  EXPECT_LE(worst_g, 1.0);
+}
+
 // CCM and MacNeal by the turns (turned_residual_flexibility.hpp) pass the
 // rows the direct bases pass, with the bounds of
 // verification/support/reduction_rows.hpp (CHOLMOD's own factor of K, its
@@ -326,14 +405,17 @@ TEST_F(CyclicBases, ResidualFlexibilityBasesPassTheRows) {
   // CCM-20 with the pieces of its T; MacNeal-20 as the commands build it.
   TurnedResidualPieces pieces;
   const std::vector<int> reps = s_cyclic->orbits.representative_positions();
-  const ReducedBasis ccm = turned_residual_flexibility(
-      c.stiffness, c.mass, p, free_interface_pool(c.stiffness, c.mass, p, 20, "CCM", &reps),
-      *s_cyclic, "CCM", &pieces);
+  const FreeInterfacePool pool = free_interface_pool(c.stiffness, c.mass, p, 20, "CCM", &reps);
+  const ReducedBasis ccm =
+      turned_residual_flexibility(c.stiffness, c.mass, p, pool, *s_cyclic, "CCM", &pieces);
+  // Two builds of the same pool (K's CHOLMOD factor, the same Lanczos) give
+  // the same bits: MacNeal's T and K^ are compared with CCM's exactly below.
   Component cyclic = c;
   cyclic.cyclic_bases = s_cyclic->symmetry.sectors;
   const ReducedBasis mn = reduce(cyclic, "macneal", 20, 0);
   EXPECT_TRUE(boundary_rows_exact(ccm, p));
   EXPECT_TRUE(boundary_rows_exact(mn, p));
+  expect_turned_flexibility(c, p, *s_cyclic, pool.flexibility.value, pieces.g);
 
   const rows::Component rc(c.stiffness, c.mass, c.boundary);
   const rows::StaticRow st =
@@ -379,7 +461,8 @@ TEST_F(CyclicBases, ResidualFlexibilityBasesPassTheRows) {
     const Eigen::SparseMatrix<double>& a = which == 0 ? c.stiffness : c.mass;
     const Eigen::MatrixXd& built = which == 0 ? ccm.stiffness : ccm.mass;
     const Eigen::MatrixXd direct = t.transpose() * (a * t);
-    const double gamma = (5.0 * (c.n_dofs() + widest(a)) + 8.0 * 20 + 10.0) * u;
+    const double gamma =
+        (5.0 * (c.n_dofs() + widest(a)) + 8.0 * static_cast<double>(pieces.w.rows()) + 10.0) * u;
     Eigen::MatrixXd bound = gamma * (envelope.transpose() * (absolute(a) * envelope));
     const Eigen::MatrixXd guyan_bound = turned_projection_bound(a, pieces.psi, 0, *s_cyclic);
     bound.topLeftCorner(nb, nb) += 0.5 * (guyan_bound + guyan_bound.transpose());
