@@ -104,13 +104,14 @@ protected:
 
   double m_dt;
   int m_r, m_nb, m_ni;
-  std::vector<int> m_boundary; ///< positions of u_B in q (boundary order); none for CC
-  Eigen::MatrixXd m_shapes;    ///< Psi_c, n_B x n_c (CC: u_B = Psi_c q_c); empty otherwise
-  std::vector<int> m_interior; ///< the other positions, ascending
-  Eigen::MatrixXd m_k;         ///< K^
-  Eigen::MatrixXd m_m;         ///< M^
-  Eigen::VectorXd m_c;         ///< diag C^ (empty: undamped)
-  Eigen::MatrixXd m_w;         ///< W of the contact problem, set by the derived part
+  std::vector<int> m_boundary;     ///< positions of u_B in q (boundary order); none for CC
+  Eigen::MatrixXd m_shapes;        ///< Psi_c, n_B x n_c (CC: u_B = Psi_c q_c); empty otherwise
+  std::vector<int> m_interior;     ///< the other positions, ascending
+  Eigen::MatrixXd m_k;             ///< K^
+  Eigen::MatrixXd m_m;             ///< M^
+  Eigen::VectorXd m_mass_diagonal; ///< M^'s diagonal when M^ is diagonal (energy), else empty
+  Eigen::VectorXd m_c;             ///< diag C^ (empty: undamped)
+  Eigen::MatrixXd m_w;             ///< W of the contact problem, set by the derived part
   // External force (m_force false: none, the vectors empty).
   bool m_force = false;
   double m_omega_f = 0.0, m_phi_f = 0.0;

@@ -19,7 +19,9 @@ CoulombNodeSolve::CoulombNodeSolve(int n_contacts, double dt, double mu,
     , m_dt(dt)
     , m_mu(mu)
     , m_subset(closing_subset)
-    , m_solver(2, mu, options) {}
+    , m_solver(2, mu, options) {
+  if (mu > 0.0) m_slip.emplace(mu);
+}
 
 void CoulombNodeSolve::set_contact_matrix(const Eigen::MatrixXd& w) {
   m_w = 0.5 * (w + w.transpose()).eval();
@@ -58,6 +60,11 @@ void CoulombNodeSolve::add_contact_work(const Eigen::VectorXd& lambda_n,
 
 void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepReport& report) {
   const std::vector<ReducedContactState> before = m_state;
+  // The direct slip solve first unless a contact stuck at the previous step
+  // (coulomb_slip_set.hpp: it declines stick, and would only cost there).
+  bool sticking = false;
+  for (ReducedContactState s : before)
+    sticking = sticking || s == ReducedContactState::stick;
   bool closing = false;
   for (int c = 0; c < m_nc; ++c)
     closing = closing || predicted(3 * c) < 0.0;
@@ -100,18 +107,23 @@ void CoulombNodeSolve::solve(const Eigen::VectorXd& predicted, int step, StepRep
         const Eigen::MatrixXd share = m_h_scale * (m_ha * m_ha.transpose());
         m_wa += 0.5 * (share + share.transpose());
       }
-      const CoulombGaussSeidelReport r = m_solver.solve(m_wa, m_pa, m_la);
-      m_sweeps += r.sweeps;
-      if (!r.converged())
-        throw ComponentIntegrationError(kWhere + "step " + std::to_string(step) +
-                                            " (t = " + message_number(step * m_dt) +
-                                            " s): contact solve failed: " + r.message,
-                                        remedied_by({Remedy::smaller_step_safety_or_friction}));
+      const bool direct = m_slip && !sticking && m_slip->solve(m_wa, m_pa, m_la);
+      if (!direct) {
+        const CoulombGaussSeidelReport r = m_solver.solve(m_wa, m_pa, m_la);
+        m_sweeps += r.sweeps;
+        if (!r.converged())
+          throw ComponentIntegrationError(kWhere + "step " + std::to_string(step) +
+                                              " (t = " + message_number(step * m_dt) +
+                                              " s): contact solve failed: " + r.message,
+                                          remedied_by({Remedy::smaller_step_safety_or_friction}));
+      }
+      const std::vector<ReducedContactState>& solved =
+          direct ? m_slip->states() : m_solver.states();
       m_lambda_next.setZero();
       m_state.assign(m_nc, ReducedContactState::open);
       for (int i = 0; i < na; ++i) {
         m_lambda_next.segment(3 * active[i], 3) = m_la.segment(3 * i, 3);
-        m_state[active[i]] = m_solver.states()[i];
+        m_state[active[i]] = solved[i];
       }
       bool grown = false;
       if (m_h != nullptr) m_z.noalias() = m_ha.transpose() * m_la;

@@ -21,12 +21,14 @@
 // x_{n-1})/2, summed into W_contact. A solve that does not converge throws
 // ComponentIntegrationError naming the step.
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "component_contact_solve.hpp"
 #include "coulomb_gauss_seidel.hpp"
+#include "coulomb_slip_set.hpp"
 #include "history.hpp"
 #include "reduced_coulomb_certificate.hpp"
 
@@ -89,6 +91,7 @@ private:
   Eigen::VectorXd m_lambda_next;
   std::vector<ReducedContactState> m_state;
   CoulombGaussSeidel m_solver;
+  std::optional<CoulombSlipSet> m_slip; ///< mu > 0: the direct solve tried first
   double m_contact_work = 0.0;
   long m_sweeps = 0;
 };

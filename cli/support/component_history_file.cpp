@@ -1,7 +1,5 @@
 #include "component_history_file.hpp"
 
-#include <cstdio>
-
 #include "run_outputs.hpp"
 
 namespace rsi {
@@ -18,14 +16,14 @@ void ComponentHistoryFile::append(const HistoryRow& row, double response) {
     m_line = m_header;
     if (row.plastic_work) m_line.insert(m_line.size() - 1, ",W_plastic");
   }
-  std::string rest;
-  append_history_csv_row(rest, row);
-  const size_t comma = rest.find(',');
-  m_line += rest.substr(0, comma);
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, ",%.17g", response);
-  m_line += buffer;
-  m_line += rest.substr(comma);
+  // The response after t; append_csv_number writes printf's "%.17g".
+  m_rest.clear();
+  append_history_csv_row(m_rest, row);
+  const size_t comma = m_rest.find(',');
+  m_line.append(m_rest, 0, comma);
+  m_line += ',';
+  append_csv_number(m_line, response);
+  m_line.append(m_rest, comma, std::string::npos);
   m_file.append(m_line);
 }
 

@@ -24,6 +24,7 @@ private:
   StreamedTextFile m_file;
   std::string m_header;
   std::string m_line;
+  std::string m_rest; ///< the row without the response, reused
   std::int64_t m_rows = 0;
 };
 

@@ -1,0 +1,139 @@
+#include "coulomb_slip_set.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "message_number.hpp"
+
+namespace rsi {
+
+namespace {
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+constexpr int kMaxSolves = 40;
+constexpr int kStalled = 3;
+
+} // namespace
+
+CoulombSlipSet::CoulombSlipSet(double mu)
+    : m_mu(mu) {
+  if (!(mu > 0.0) || !std::isfinite(mu))
+    throw std::invalid_argument("CoulombSlipSet: mu = " + message_number(mu) +
+                                ", allowed a finite value > 0");
+}
+
+bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
+                           const Eigen::Ref<const Eigen::VectorXd>& predicted,
+                           Eigen::VectorXd& lambda) {
+  const int m = static_cast<int>(w.rows());
+  if (w.cols() != m || m % 3 != 0 || predicted.size() != m)
+    throw std::invalid_argument(
+        "CoulombSlipSet::solve: W is " + std::to_string(w.rows()) + " x " +
+        std::to_string(w.cols()) + " and predicted has " + std::to_string(predicted.size()) +
+        " entries, allowed W square of size 3 nc and predicted of W's size");
+  const int nc = m / 3;
+  const bool warm = lambda.size() == m;
+  m_iterations = 0;
+  m_set.clear();
+  m_in.assign(nc, 0);
+  m_e.resize(2, nc);
+  const auto join = [&](int c, const Eigen::Vector2d& direction) {
+    const double size = direction.norm();
+    if (!(size > 0.0) || !std::isfinite(size)) return false;
+    m_e.col(c) = direction / size;
+    m_set.push_back(c);
+    m_in[c] = 1;
+    return true;
+  };
+  for (int c = 0; c < nc; ++c) {
+    const bool carried = warm && lambda(3 * c) > 0.0 && lambda.segment<2>(3 * c + 1).any();
+    if (carried) {
+      if (!join(c, -lambda.segment<2>(3 * c + 1))) return false;
+    } else if (predicted(3 * c) < 0.0) {
+      if (!join(c, predicted.segment<2>(3 * c + 1))) return false;
+    }
+  }
+
+  m_lambda.resize(m);
+  double last_move = std::numeric_limits<double>::infinity();
+  int stalled = 0;
+  while (m_iterations < kMaxSolves) {
+    const int k = static_cast<int>(m_set.size());
+    m_lambda.setZero();
+    if (k > 0) {
+      m_a.resize(k, k);
+      m_rhs.resize(k);
+      for (int i = 0; i < k; ++i) {
+        const int ci = 3 * m_set[i];
+        m_rhs(i) = -predicted(ci);
+        for (int j = 0; j < k; ++j) {
+          const int cj = 3 * m_set[j];
+          m_a(i, j) = w(ci, cj) -
+                      m_mu * (w(ci, cj + 1) * m_e(0, m_set[j]) + w(ci, cj + 2) * m_e(1, m_set[j]));
+        }
+      }
+      m_lu.compute(m_a);
+      m_ln = m_lu.solve(m_rhs);
+      ++m_iterations;
+      if (!m_ln.allFinite()) return false;
+      int leaving = -1;
+      double lowest = 0.0;
+      for (int i = 0; i < k; ++i)
+        if (m_ln(i) < lowest) lowest = m_ln(i), leaving = i;
+      if (leaving >= 0) {
+        m_in[m_set[leaving]] = 0;
+        m_set.erase(m_set.begin() + leaving);
+        continue;
+      }
+      for (int i = 0; i < k; ++i) {
+        const int c = m_set[i];
+        m_lambda(3 * c) = m_ln(i);
+        m_lambda.segment<2>(3 * c + 1) = (-m_mu * m_ln(i)) * m_e.col(c);
+      }
+    }
+    m_y = predicted;
+    for (int c : m_set)
+      m_y.noalias() += w.middleCols(3 * c, 3) * m_lambda.segment<3>(3 * c);
+    int closing = -1;
+    double deepest = 0.0;
+    for (int c = 0; c < nc; ++c)
+      if (!m_in[c] && m_y(3 * c) < deepest) deepest = m_y(3 * c), closing = c;
+    if (closing >= 0) {
+      if (!join(closing, m_y.segment<2>(3 * closing + 1))) return false;
+      continue;
+    }
+    double move = 0.0;
+    for (int c : m_set) {
+      const Eigen::Vector2d s = m_y.segment<2>(3 * c + 1);
+      if (!(s.dot(m_e.col(c)) > 0.0)) return false; // stick or reversal
+      const Eigen::Vector2d e = s / s.norm();
+      move = std::max(move, (e - m_e.col(c)).cwiseAbs().maxCoeff());
+      m_e.col(c) = e;
+    }
+    if (move <= 8.0 * eps) {
+      // (1)'s residual on S: the LU's backward error (about 3 k eps of
+      // |L||U||lambda_n|, partial pivoting), forming (1) (3 eps) and y
+      // (3 k terms): within (6 k + 10) eps of the size of the row's terms.
+      for (int c : m_set) {
+        double size = std::abs(predicted(3 * c));
+        for (int j : m_set)
+          size +=
+              w.row(3 * c).segment<3>(3 * j).cwiseAbs().dot(m_lambda.segment<3>(3 * j).cwiseAbs());
+        if (!(std::abs(m_y(3 * c)) <= (6.0 * k + 10.0) * eps * size)) return false;
+      }
+      lambda = m_lambda;
+      m_state.assign(nc, ReducedContactState::open);
+      for (int c : m_set)
+        m_state[c] = ReducedContactState::slip;
+      return true;
+    }
+    stalled = move < last_move ? 0 : stalled + 1;
+    if (stalled >= kStalled) return false;
+    last_move = move;
+  }
+  return false;
+}
+
+} // namespace rsi
