@@ -39,6 +39,18 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
   m_set.clear();
   m_in.assign(nc, 0);
   m_e.resize(2, nc);
+  // Row r of [g; s] at the multipliers of `set` (W symmetric: its column r
+  // is its row, contiguous).
+  const auto row_at = [&](int r, const Eigen::VectorXd& multipliers, const std::vector<int>& set) {
+    double y = predicted(r);
+    for (int c : set)
+      y += w.col(r).segment<3>(3 * c).dot(multipliers.segment<3>(3 * c));
+    return y;
+  };
+  const auto slip_at = [&](int c, const Eigen::VectorXd& multipliers, const std::vector<int>& set) {
+    return Eigen::Vector2d(row_at(3 * c + 1, multipliers, set),
+                           row_at(3 * c + 2, multipliers, set));
+  };
   const auto join = [&](int c, const Eigen::Vector2d& direction) {
     const double size = direction.norm();
     if (!(size > 0.0) || !std::isfinite(size)) return false;
@@ -47,21 +59,27 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
     m_in[c] = 1;
     return true;
   };
-  for (int c = 0; c < nc; ++c) {
-    const bool carried = warm && lambda(3 * c) > 0.0 && lambda.segment<2>(3 * c + 1).any();
-    if (carried) {
-      if (!join(c, -lambda.segment<2>(3 * c + 1))) return false;
-    } else if (predicted(3 * c) < 0.0) {
-      if (!join(c, predicted.segment<2>(3 * c + 1))) return false;
-    }
-  }
+  // S: the contacts that carried a force and the closing ones; e: their
+  // slips at the warm start's multipliers (one fixed-point iteration ahead
+  // of the warm start's own directions).
+  std::vector<int>& carried = m_carried;
+  carried.clear();
+  for (int c = 0; c < nc; ++c)
+    if (warm && lambda(3 * c) > 0.0) carried.push_back(c);
+  for (int c = 0; c < nc; ++c)
+    if ((warm && lambda(3 * c) > 0.0) || predicted(3 * c) < 0.0)
+      if (!join(c, warm ? slip_at(c, lambda, carried)
+                        : Eigen::Vector2d(predicted.segment<2>(3 * c + 1))))
+        return false;
 
-  m_lambda.resize(m);
+  m_lambda.setZero(m);
   double last_move = std::numeric_limits<double>::infinity();
   int stalled = 0;
+  bool factored = false;
   while (m_iterations < kMaxSolves) {
     const int k = static_cast<int>(m_set.size());
-    m_lambda.setZero();
+    for (int c = 0; c < nc; ++c)
+      if (!m_in[c]) m_lambda.segment<3>(3 * c).setZero();
     if (k > 0) {
       m_a.resize(k, k);
       m_rhs.resize(k);
@@ -74,8 +92,16 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
                       m_mu * (w(ci, cj + 1) * m_e(0, m_set[j]) + w(ci, cj + 2) * m_e(1, m_set[j]));
         }
       }
-      m_lu.compute(m_a);
-      m_ln = m_lu.solve(m_rhs);
+      // Factored once a set: the directions move (1) by mu |W_nt| |de|, and
+      // iterative refinement on the set's first factors converges at that
+      // rate to the same solution (the gap check below is its residual).
+      if (!factored) {
+        m_lu.compute(m_a);
+        m_ln = m_lu.solve(m_rhs);
+        factored = true;
+      } else {
+        m_ln += m_lu.solve(m_rhs - m_a * m_ln);
+      }
       ++m_iterations;
       if (!m_ln.allFinite()) return false;
       int leaving = -1;
@@ -85,6 +111,7 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
       if (leaving >= 0) {
         m_in[m_set[leaving]] = 0;
         m_set.erase(m_set.begin() + leaving);
+        factored = false;
         continue;
       }
       for (int i = 0; i < k; ++i) {
@@ -93,36 +120,42 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         m_lambda.segment<2>(3 * c + 1) = (-m_mu * m_ln(i)) * m_e.col(c);
       }
     }
-    m_y = predicted;
-    for (int c : m_set)
-      m_y.noalias() += w.middleCols(3 * c, 3) * m_lambda.segment<3>(3 * c);
     int closing = -1;
     double deepest = 0.0;
-    for (int c = 0; c < nc; ++c)
-      if (!m_in[c] && m_y(3 * c) < deepest) deepest = m_y(3 * c), closing = c;
+    for (int c = 0; c < nc; ++c) {
+      if (m_in[c]) continue;
+      const double g = row_at(3 * c, m_lambda, m_set);
+      if (g < deepest) deepest = g, closing = c;
+    }
     if (closing >= 0) {
-      if (!join(closing, m_y.segment<2>(3 * closing + 1))) return false;
+      if (!join(closing, slip_at(closing, m_lambda, m_set))) return false;
+      factored = false;
       continue;
     }
     double move = 0.0;
     for (int c : m_set) {
-      const Eigen::Vector2d s = m_y.segment<2>(3 * c + 1);
+      const Eigen::Vector2d s = slip_at(c, m_lambda, m_set);
       if (!(s.dot(m_e.col(c)) > 0.0)) return false; // stick or reversal
       const Eigen::Vector2d e = s / s.norm();
       move = std::max(move, (e - m_e.col(c)).cwiseAbs().maxCoeff());
       m_e.col(c) = e;
     }
-    if (move <= 8.0 * eps) {
-      // (1)'s residual on S: the LU's backward error (about 3 k eps of
-      // |L||U||lambda_n|, partial pivoting), forming (1) (3 eps) and y
-      // (3 k terms): within (6 k + 10) eps of the size of the row's terms.
+    // (1)'s residual on S: the LU's backward error (about 3 k eps of
+    // |L||U||lambda_n|, partial pivoting), forming (1) (3 eps) and g (3 k
+    // terms): within (6 k + 10) eps of the size of the row's terms. A set
+    // whose refinement has not reached it yet takes another iteration.
+    const auto closed = [&]() {
       for (int c : m_set) {
         double size = std::abs(predicted(3 * c));
         for (int j : m_set)
           size +=
-              w.row(3 * c).segment<3>(3 * j).cwiseAbs().dot(m_lambda.segment<3>(3 * j).cwiseAbs());
-        if (!(std::abs(m_y(3 * c)) <= (6.0 * k + 10.0) * eps * size)) return false;
+              w.col(3 * c).segment<3>(3 * j).cwiseAbs().dot(m_lambda.segment<3>(3 * j).cwiseAbs());
+        if (!(std::abs(row_at(3 * c, m_lambda, m_set)) <= (6.0 * k + 10.0) * eps * size))
+          return false;
       }
+      return true;
+    };
+    if (move <= 8.0 * eps && closed()) {
       lambda = m_lambda;
       m_state.assign(nc, ReducedContactState::open);
       for (int c : m_set)

@@ -75,12 +75,13 @@ private:
   double m_mu;
   int m_iterations = 0;
   std::vector<ReducedContactState> m_state;
-  std::vector<int> m_set;        ///< S, contact indices
-  std::vector<char> m_in;        ///< contact c is in S
-  Eigen::Matrix2Xd m_e;          ///< e_c per contact (columns)
-  Eigen::MatrixXd m_a;           ///< (1) on S
-  Eigen::VectorXd m_rhs, m_ln;   ///< -g~_S and lambda_n,S
-  Eigen::VectorXd m_lambda, m_y; ///< the candidate lambda and [g; s] at it
+  std::vector<int> m_set;      ///< S, contact indices
+  std::vector<int> m_carried;  ///< the warm start's contacts with lambda_n > 0
+  std::vector<char> m_in;      ///< contact c is in S
+  Eigen::Matrix2Xd m_e;        ///< e_c per contact (columns)
+  Eigen::MatrixXd m_a;         ///< (1) on S
+  Eigen::VectorXd m_rhs, m_ln; ///< -g~_S and lambda_n,S
+  Eigen::VectorXd m_lambda;    ///< the candidate lambda
   Eigen::PartialPivLU<Eigen::MatrixXd> m_lu;
 };
 
