@@ -1,6 +1,8 @@
 #pragma once
 // The Coulomb contact solve of a reduced component on a rigid casing
-// (component_integrator.hpp), stick and slip by CoulombGaussSeidel: per
+// (component_integrator.hpp), stick and slip by CoulombGaussSeidel, after
+// CoulombSlipSet's direct solve where every closed contact slips (mu > 0,
+// no contact stuck at the previous step; it declines otherwise): per
 // contact node three rows (n, t1, t2), the step's problem
 //   [g; s] = [g~; s~] + W lambda
 // with [g~; s~] the prediction of the casing part (rigid_casing_part.hpp)
@@ -13,8 +15,8 @@
 // carry a force: the closing ones (g~ < 0) and those that carried a force at
 // the previous step, grown by every contact that the others' forces close
 // (g~_c + W_cA lambda_A < 0), until none does (or on the whole W when
-// closing_subset is off); the Gauss-Seidel is warm-started with the previous
-// multipliers, and the step's certificate (reduced_coulomb_certificate) is
+// closing_subset is off); the slip set and the Gauss-Seidel are warm-started
+// with the previous multipliers, and the step's certificate (reduced_coulomb_certificate) is
 // checked on the whole W. A step with a closing contact costs the
 // Gauss-Seidel solve (on the closing contacts only, grown while their forces
 // close others). The contact work of a step is lambda_n^T B (x_{n+1} -
@@ -68,7 +70,7 @@ public:
   void add_contact_work(const Eigen::VectorXd& lambda_n, const Eigen::MatrixXd& rows,
                         const Eigen::VectorXd& increment) override;
   double contact_work() const override { return m_contact_work; }
-  /// Gauss-Seidel sweeps summed since start().
+  /// Gauss-Seidel sweeps summed since start() (none for a step the slip set solved).
   long sweeps() const override { return m_sweeps; }
 
 private:

@@ -16,34 +16,46 @@
 // pivoting). The directions are then the fixed point e_c = s_c / |s_c| of
 // the slips that (1)'s lambda produces. Its contraction: a change de of the
 // directions moves s by about mu |W_tt| |lambda_n| de, so the map contracts
-// by rho ~ mu |W_tt| lambda_n / |s|. Where the casing slides past the tip
-// (r Omega dt = 4.2 mm a step on Rotor 37, against W_tt lambda_t of order
-// 1e-3 mm) rho is about 1e-3, and four or five iterations reach round-off.
+// by rho ~ mu |W_tt| lambda_n / |s| (summed over the coupled contacts): a
+// small rho where the casing slides past the tip at r Omega dt = 4.2 mm a
+// step (Rotor 37) against the friction forces' slips.
 // Iteration (at most 40 solves of (1)):
-//   - S and e start from the warm start (the previous step's multipliers:
-//     lambda_n > 0, e = -lambda_t/|lambda_t|) and the closing contacts
-//     (g~_c < 0, e = s~_c/|s~_c|);
-//   - a negative lambda_n of (1) leaves S (the most negative first);
+//   - S starts as the contacts that carried a force at the warm start (the
+//     previous step's multipliers, lambda_n > 0) and the closing ones
+//     (g~_c < 0); e_c as the slips s_c/|s_c| at the warm start's multipliers
+//     (one iteration of the fixed point ahead of their own directions);
+//   - (1) is factored once a set (LU, partial pivoting); while only the
+//     directions move, lambda_n,S is refined on those factors,
+//     lambda_n += LU^-1 (-g~_S - A(e) lambda_n): A(e) moves by mu |W_nt| |de|,
+//     so the refinement contracts at that rate to (1)'s solution;
+//   - a negative lambda_n leaves S (the most negative first);
 //   - an open contact that (1)'s forces close (g_c < 0) joins S (the most
 //     penetrated first, e = s_c/|s_c|);
 //   - else each e_c is replaced by s_c/|s_c|, and the solve ends when no
-//     direction moved by more than 8 eps (max norm).
+//     direction moved by more than 8 eps (max norm) and (1)'s residual is
+//     within the bound below.
+// Measured on Rotor 37, MacNeal-50 (16 tip nodes, 5 sliding a step on
+// average): rho about 1/50 (the directions' move falls from 4e-4 to 8 eps
+// in 6 to 8 iterations), 8 solves of (1) a step with a closing contact.
 // It declines (returns false, lambda untouched) when a slip turns against
 // its direction (s_c . e_c <= 0) or vanishes (stick or reversal: the
 // Gauss-Seidel decides those), when the directions stop contracting (no
 // decrease over 3 iterations), when (1) is singular (a non-finite solution)
 // or after 40 solves. An accepted lambda is a solution of the law: open
 // contacts have lambda = 0 and g >= 0 as computed; slipping ones lambda_n
-// >= 0, |lambda_t| = mu lambda_n, g_c = (1)'s residual (checked: at most
-// 16 eps times the size of the terms of its row, else declined) and
-// lambda_t,c + mu lambda_n,c s_c/|s_c| = mu lambda_n,c (e_c - e'_c), at most
-// 8 eps mu lambda_n,c per entry. For mu below the bound of uniqueness it is
-// the solution the Gauss-Seidel converges to (test_coulomb_slip_set).
+// >= 0, |lambda_t| = mu lambda_n, g_c = (1)'s residual (at most (6 k + 10)
+// eps of the size of its row's terms, k = |S|: the LU's backward error,
+// forming (1) and g) and lambda_t,c + mu lambda_n,c s_c/|s_c| =
+// mu lambda_n,c (e_c - e'_c), at most 8 eps mu lambda_n,c per entry. For mu
+// below the bound of uniqueness it is the solution the Gauss-Seidel
+// converges to (test_coulomb_slip_set).
 //
-// Cost: per solve of (1) |S|^3 / 3 flops for the LU and 2 * 3 nc * 3 |S|
-// for the slips; against the Gauss-Seidel's 8 sweeps a step (Rotor 37,
-// MacNeal-50: 5 sliding contacts) of local solves through Newton's method
-// on the slip angle.
+// Cost per solve of (1): the k^3/3 flops of an LU once a set, else 2 k^2
+// for the refinement's residual and 2 k^2 for its triangular solves; 2 * 3k
+// flops for each of the (nc - k) + 2k rows of [g; s] the iteration reads.
+// Against the Gauss-Seidel's 8 sweeps a step (Rotor 37 as above) of local
+// solves through Newton's method on the slip angle: bench/RESULTS.md,
+// session 37.
 
 #include <vector>
 
