@@ -17,9 +17,9 @@
 // (g~_c + W_cA lambda_A < 0), until none does (or on the whole W when
 // closing_subset is off); the slip set and the Gauss-Seidel are warm-started
 // with the previous multipliers, and the step's certificate (reduced_coulomb_certificate) is
-// checked on the whole W. A step with a closing contact costs the
-// Gauss-Seidel solve (on the closing contacts only, grown while their forces
-// close others). The contact work of a step is lambda_n^T B (x_{n+1} -
+// checked on the whole W. A step with a closing contact costs the slip set's
+// solve or the Gauss-Seidel's (on the closing contacts only, grown while their
+// forces close others). The contact work of a step is lambda_n^T B (x_{n+1} -
 // x_{n-1})/2, summed into W_contact. A solve that does not converge throws
 // ComponentIntegrationError naming the step.
 

@@ -14,6 +14,8 @@ namespace {
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr int kMaxSolves = 40;
 constexpr int kStalled = 3;
+constexpr double kSingular =
+    1e-12; ///< (1)'s reciprocal condition estimate below which it is singular
 
 } // namespace
 
@@ -34,6 +36,7 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         std::to_string(w.cols()) + " and predicted has " + std::to_string(predicted.size()) +
         " entries, allowed W square of size 3 nc and predicted of W's size");
   const int nc = m / 3;
+  if (!w.allFinite() || !predicted.allFinite()) return false; // the Gauss-Seidel reports it
   const bool warm = lambda.size() == m;
   m_iterations = 0;
   m_set.clear();
@@ -97,6 +100,7 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
       // rate to the same solution (the gap check below is its residual).
       if (!factored) {
         m_lu.compute(m_a);
+        if (!(m_lu.rcond() > kSingular)) return false;
         m_ln = m_lu.solve(m_rhs);
         factored = true;
       } else {
@@ -112,6 +116,7 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         m_in[m_set[leaving]] = 0;
         m_set.erase(m_set.begin() + leaving);
         factored = false;
+        last_move = std::numeric_limits<double>::infinity(), stalled = 0;
         continue;
       }
       for (int i = 0; i < k; ++i) {
@@ -130,6 +135,7 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
     if (closing >= 0) {
       if (!join(closing, slip_at(closing, m_lambda, m_set))) return false;
       factored = false;
+      last_move = std::numeric_limits<double>::infinity(), stalled = 0;
       continue;
     }
     double move = 0.0;
@@ -140,10 +146,11 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
       move = std::max(move, (e - m_e.col(c)).cwiseAbs().maxCoeff());
       m_e.col(c) = e;
     }
-    // (1)'s residual on S: the LU's backward error (about 3 k eps of
-    // |L||U||lambda_n|, partial pivoting), forming (1) (3 eps) and g (3 k
-    // terms): within (6 k + 10) eps of the size of the row's terms. A set
-    // whose refinement has not reached it yet takes another iteration.
+    // (1)'s residual on S: a solve or refinement on backward-stable factors
+    // leaves about (3 k + 1) eps of the row's terms |g~_c| + sum |W_cj|
+    // |lambda_j| (after refinement, whatever the pivots' growth); forming (1)
+    // 3 eps and g (3 k terms) 3 k eps more: (6 k + 10) eps with a margin. A
+    // set whose refinement has not reached it yet takes another iteration.
     const auto closed = [&]() {
       for (int c : m_set) {
         double size = std::abs(predicted(3 * c));
@@ -162,9 +169,13 @@ bool CoulombSlipSet::solve(const Eigen::Ref<const Eigen::MatrixXd>& w,
         m_state[c] = ReducedContactState::slip;
       return true;
     }
-    stalled = move < last_move ? 0 : stalled + 1;
-    if (stalled >= kStalled) return false;
-    last_move = move;
+    // Stalled: the directions stop contracting (a converged set refining
+    // (1) to its bound does not count).
+    if (move > 8.0 * eps) {
+      stalled = move < last_move ? 0 : stalled + 1;
+      if (stalled >= kStalled) return false;
+      last_move = move;
+    }
   }
   return false;
 }

@@ -36,16 +36,18 @@
 //     within the bound below.
 // Measured on Rotor 37, MacNeal-50 (16 tip nodes, 5 sliding a step on
 // average): rho about 1/50 (the directions' move falls from 4e-4 to 8 eps
-// in 6 to 8 iterations), 8 solves of (1) a step with a closing contact.
+// in 6 to 8 iterations): 8.05 solves of (1) a step with a closing contact,
+// one factorization a set and refinements otherwise.
 // It declines (returns false, lambda untouched) when a slip turns against
 // its direction (s_c . e_c <= 0) or vanishes (stick or reversal: the
 // Gauss-Seidel decides those), when the directions stop contracting (no
-// decrease over 3 iterations), when (1) is singular (a non-finite solution)
-// or after 40 solves. An accepted lambda is a solution of the law: open
+// decrease over 3 iterations once a set is fixed), when (1) is singular
+// (LU's reciprocal condition estimate <= 1e-12), when W or [g~; s~] is not
+// finite, or after 40 solves. An accepted lambda is a solution of the law: open
 // contacts have lambda = 0 and g >= 0 as computed; slipping ones lambda_n
 // >= 0, |lambda_t| = mu lambda_n, g_c = (1)'s residual (at most (6 k + 10)
-// eps of the size of its row's terms, k = |S|: the LU's backward error,
-// forming (1) and g) and lambda_t,c + mu lambda_n,c s_c/|s_c| =
+// eps of the size of its row's terms, k = |S|: the solve or refinement on
+// backward-stable factors, forming (1) and g) and lambda_t,c + mu lambda_n,c s_c/|s_c| =
 // mu lambda_n,c (e_c - e'_c), at most 8 eps mu lambda_n,c per entry. For mu
 // below the bound of uniqueness it is the solution the Gauss-Seidel
 // converges to (test_coulomb_slip_set).
@@ -71,7 +73,8 @@ public:
   /// mu: friction coefficient, finite and > 0 (std::invalid_argument).
   explicit CoulombSlipSet(double mu);
 
-  /// Tries the step's problem (`w`: W, 3 nc square, symmetric, finite;
+  /// Tries the step's problem (`w`: W, 3 nc square, symmetric to the bit:
+  /// its columns are read as its rows;
   /// `predicted`: [g~; s~]). `lambda`: the warm start on entry (W's size,
   /// or anything else for none); on success the solution, with every
   /// contact open or slipping (states()); on decline unchanged.

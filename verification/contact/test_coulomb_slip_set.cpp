@@ -261,6 +261,18 @@ TEST(CoulombSlipSet, RandomSlidingAgainstCertificateAndGaussSeidel) {
       const CoulombGaussSeidelReport report = gs.solve(w, q, lambda_gs);
       ASSERT_TRUE(report.converged()) << report.message;
       ASSERT_EQ(gs.states(), solver.states()) << "mu " << mu << " seed " << seed;
+      // The Gauss-Seidel's own residuals (rb in expect_equal_solutions) small:
+      // its gaps within delta_y of test_coulomb_gauss_seidel.cpp's header,
+      // ||W||_inf Delta + (3m + nc + 2 + 8 (1+d)) eps S, m = 3 nc, d = 2.
+      const ReducedCoulombCertificate gc =
+          reduced_coulomb_certificate(w, q, 2, mu, lambda_gs, gs.states());
+      const double l_gs = lambda_gs.cwiseAbs().maxCoeff();
+      const double w_inf = w.cwiseAbs().rowwise().sum().maxCoeff();
+      const double delta_y =
+          w_inf * report.last_change +
+          (3.0 * 3 * nc + nc + 2 + 8.0 * 3) * eps * (q.cwiseAbs().maxCoeff() + w_inf * l_gs);
+      EXPECT_LE(gc.max_penetration, delta_y);
+      EXPECT_LE(gc.max_complementarity, delta_y * l_gs);
       expect_equal_solutions(w, q, mu, lambda, lambda_gs, solver.states());
     }
   }
@@ -334,7 +346,43 @@ TEST(CoulombSlipSet, WarmStartEqualsColdSolve) {
   std::printf("cold %d solves, warm %d solves; |warm - first| %.3e N\n", cold_solves,
               solver.iterations(), (warm - first).norm());
   ASSERT_EQ(solver.states(), cold_states);
+  expect_certificate(w, perturbed, mu, cold, cold_states);
+  expect_certificate(w, perturbed, mu, warm, cold_states);
   expect_equal_solutions(w, perturbed, mu, warm, cold, cold_states);
+}
+
+// A contact that the other's force closes joins the set. Two contacts, W =
+// 1e-8 [1 0 0 -0.5 0 0; 0 1 0 0 0 0; 0 0 1 0 0 0; -0.5 0 0 1 0 0; 0 0 0 0 1
+// 0; 0 0 0 0 0 1] (eigenvalues 0.5e-8, 1e-8, 1.5e-8: SPD), g~ = (-1e-6,
+// 1e-7), s~_A = (3e-3, 0), s~_B = (0, 3e-3): only A closes at the
+// prediction; alone it takes lambda_n = 1e-6 / 1e-8 = 100 N, which puts B's
+// gap at 1e-7 - 0.5e-8 100 = -4e-7 < 0. W_nt = 0, so (1) is W_nn's
+// block: 1e-8 [1 -0.5; -0.5 1] lambda_n = (1e-6, -1e-7), lambda_n =
+// (0.95e-6, 0.4e-6) / 0.75e-8 = (126.666..., 53.333...) N, both > 0; W_tt =
+// 1e-8 I keeps each slip along its s~ (s_A = (3e-3 - 1e-8 mu lambda_A, 0)),
+// so lambda_t = -mu lambda_n e with e = s~/|s~|.
+TEST(CoulombSlipSet, ContactClosedByTheOthersJoins) {
+  const double mu = 0.3;
+  Eigen::MatrixXd w = Eigen::MatrixXd::Identity(6, 6);
+  w(0, 3) = w(3, 0) = -0.5;
+  w *= 1e-8;
+  Eigen::VectorXd q(6);
+  q << -1e-6, 3e-3, 0.0, 1e-7, 0.0, 3e-3;
+  CoulombSlipSet solver(mu);
+  Eigen::VectorXd lambda;
+  ASSERT_TRUE(solver.solve(w, q, lambda));
+  ASSERT_EQ(solver.states(), std::vector<State>(2, State::slip));
+  Eigen::VectorXd expected(6);
+  const double la = 0.95e-6 / 0.75e-8, lb = 0.4e-6 / 0.75e-8;
+  expected << la, -mu * la, 0.0, lb, 0.0, -mu * lb;
+  // The 2 x 2 solve: LU's backward error about 3 * 2 eps on terms of the
+  // solution's size, cond 3 (eigenvalues 0.5 and 1.5 of the block), plus
+  // the decimal data's rounding (eps/2 each): within 40 eps of max |lambda|.
+  const double error = (lambda - expected).cwiseAbs().maxCoeff();
+  std::printf("joined: %d solves, |lambda - closed form| %.3e N of %.3e\n", solver.iterations(),
+              error, la);
+  EXPECT_LE(error, 40.0 * eps * la);
+  expect_certificate(w, q, mu, lambda, solver.states());
 }
 
 // mu <= 0, NaN or infinite; W not square, not of size 3 nc; predicted of

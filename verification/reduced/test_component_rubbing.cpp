@@ -112,8 +112,10 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
     ASSERT_TRUE(r->summary.completed) << r->summary.status;
     // The window reaches the oval's first closing: contact-steps > 0.
     EXPECT_GT(r->summary.slip_contact_steps + r->summary.stick_contact_steps, 0);
-    // Certificate: round-off of the Gauss-Seidel solve (coulomb_gauss_seidel.hpp:
-    // residuals ~ m eps (|g~| + ||W||_inf |lambda|), m = 48): penetration
+    // Certificate: round-off of the contact solve (the slip set's acceptance,
+    // coulomb_slip_set.hpp, or the Gauss-Seidel's stopping rule,
+    // coulomb_gauss_seidel.hpp: residuals ~ m eps (|g~| + ||W||_inf |lambda|),
+    // m = 48): penetration
     // below 1e-11 of g_m, cone violation below 1e-12 of the largest multiplier.
     EXPECT_LE(r->summary.max_penetration, 1e-11 * gm);
     double lambda_max = 0.0;
@@ -126,11 +128,12 @@ TEST(ComponentRubbing, Blade3dMacNealAndCraigBamptonOnTheOvalCasing) {
     EXPECT_LE(r->summary.energy_balance_error,
               r->summary.steps * r->r * 2.2e-16 * r->summary.energy_scale);
   }
-  // The Gauss-Seidel on the closing contacts only (the default) against the
-  // same on the whole W. Open contacts contribute exact zeros to the whole-W
-  // sweeps, so the arithmetic on the closing rows is the same up to the
+  // The solve on the closing contacts only (the default) against the same
+  // on the whole W. Open contacts contribute exact zeros to the whole-W
+  // solve, so the arithmetic on the closing rows is the same up to the
   // order of the contacts (a grown set appends). Bound: both stop within a
-  // change of 1e-14 of |lambda| of the unique solution (W positive
+  // change of 1e-14 of |lambda| of the unique solution (the Gauss-Seidel's
+  // rule; the slip set's residuals are round-off of (1)) (W positive
   // definite), amplified into the state by at most cond(W) a step and
   // accumulated linearly over the steps: steps x cond(W) x 1e-14 of the size.
   const RubbingRun whole = run("macneal", 1, false);
