@@ -123,7 +123,10 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
   m_active.assign(m_nc, 0);
   m_response.assign(m_nc, BarResponse{});
   if (m_patched) {
+    m_patch_angle = m_patch.circumferential / m_cells.geometry().radius;
+    for (int c = 0; c < m_nc; ++c) m_patch_rows.push_back(patch_rows(m_cells, m_axial[c], m_patch.axial));
     m_patch_cells.assign(m_nc, {});
+    m_read.assign(m_nc, {});
     m_previous.assign(m_nc, {});
     m_patch_response.assign(m_nc, {});
     m_patch_solve.assign(m_nc, PatchCompliantSolve{});
@@ -160,15 +163,23 @@ std::vector<int> LinerContactSolve::cells_under(int c, double t) const {
 
 void LinerContactSolve::place_patches(double t) {
   for (int c = 0; c < m_nc; ++c) {
-    m_patch_cells[c] = cells_under(c, t);
-    const size_t n = m_patch_cells[c].size();
+    // patch_cells (liner_patch_cells.hpp) without its allocations: the rows
+    // are fixed, the sectors move with the casing-frame angle.
+    patch_sectors(m_cells, m_omega * t + m_phi[c], m_patch_angle, m_sectors);
+    std::vector<int>& cells = m_patch_cells[c];
+    cells.clear();
+    for (int j : m_patch_rows[c])
+      for (int i : m_sectors) cells.push_back(j * m_cells.n_theta() + i);
+    const size_t n = cells.size();
     m_previous[c].resize(n);
+    m_read[c].assign(n, 0);
     m_patch_response[c].assign(n, BarResponse{});
     for (size_t i = 0; i < n; ++i) {
       // Until its first evaluation a response holds the cell's committed state.
-      m_patch_response[c][i].state = m_cells.state(m_patch_cells[c][i]);
-      PatchLink& last = m_last[static_cast<size_t>(m_patch_cells[c][i])];
+      m_patch_response[c][i].state = m_cells.state(cells[i]);
+      PatchLink& last = m_last[static_cast<size_t>(cells[i])];
       m_previous[c][i] = last;
+      if (last.contact >= 0) m_read[last.contact][last.position] = 1;
       last = PatchLink{c, static_cast<int>(i)};
     }
   }
@@ -185,11 +196,17 @@ BarState LinerContactSolve::patch_start_state(int c, int position) const {
   return m_cells.state(m_patch_cells[c][position]);
 }
 
-double LinerContactSolve::patch_solve(int c, double depth_pred, double compliance) {
+double LinerContactSolve::patch_solve(int c, double depth_pred, double compliance, bool all) {
   const int n = static_cast<int>(m_patch_cells[c].size());
   m_from.resize(n);
   for (int i = 0; i < n; ++i) m_from[i] = patch_start_state(c, i);
-  return m_patch_solve[c](m_cells, m_from, depth_pred, compliance, m_patch_response[c]);
+  const double force = m_patch_solve[c].force(m_cells, m_from, depth_pred, compliance);
+  // A response no chain reads is needed only at the certificate (header).
+  for (int i = 0; i < n; ++i)
+    if (all || m_read[c][i])
+      m_patch_response[c][i] =
+          PatchCompliantSolve::response(m_cells, m_from[i], depth_pred, compliance, force);
+  return force;
 }
 
 void LinerContactSolve::add_contact_work(const Eigen::VectorXd& lambda_n,
@@ -227,7 +244,7 @@ double LinerContactSolve::sweep(const Eigen::VectorXd& predicted) {
     const double wnn = m_w(3 * c, 3 * c);
     double force = 0.0;
     if (m_patched) {
-      force = patch_solve(c, -(m_y(3 * c) - wnn * m_lambda(3 * c)), wnn);
+      force = patch_solve(c, -(m_y(3 * c) - wnn * m_lambda(3 * c)), wnn, false);
     } else {
       const BarState from = start_state(c);
       const double delta = -(m_y(3 * c) - wnn * m_lambda(3 * c)) - from.wear;
@@ -359,11 +376,18 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
     const double g = m_y(3 * c);
     const double wnn = m_w(3 * c, 3 * c);
     if (m_patched) {
-      // An inactive contact's responses are kept too: no chain reads them.
-      const double f = patch_solve(c, -(g - wnn * m_lambda(3 * c)), wnn);
-      residual = std::max(residual, std::abs(m_lambda(3 * c) - f));
-      for (const BarResponse& r : m_patch_response[c])
-        m_elastic_energy += r.force * r.force / (2.0 * m_cells.stiffness());
+      const double depth = -(g - wnn * m_lambda(3 * c));
+      if (!m_active[c] && depth < least_wear(c, true)) {
+        // Short of every bar (lambda_n,c = 0): the solve's force and every
+        // bar's is exactly 0, its residual |lambda_n,c|, its energy 0.
+        residual = std::max(residual, std::abs(m_lambda(3 * c)));
+      } else {
+        // An inactive contact's responses are kept too: no chain reads them.
+        const double f = patch_solve(c, depth, wnn, true);
+        residual = std::max(residual, std::abs(m_lambda(3 * c) - f));
+        for (const BarResponse& r : m_patch_response[c])
+          m_elastic_energy += r.force * r.force / (2.0 * m_cells.stiffness());
+      }
     } else {
       const BarState from = start_state(c);
       const BarResponse r = m_cells.compliant(from, -(g - wnn * m_lambda(3 * c)) - from.wear, wnn);

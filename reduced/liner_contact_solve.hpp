@@ -170,8 +170,9 @@ private:
   /// starts from this step (the chain of the header).
   BarState patch_start_state(int c, int position) const;
   /// With a patch: the joint compliant solve of contact c from depth d~
-  /// (header), its bars' responses kept in m_patch_response[c].
-  double patch_solve(int c, double depth_pred, double compliance);
+  /// (header), its bars' responses kept in m_patch_response[c]: every one
+  /// (`all`), or only those a later contact's chain reads (a sweep's).
+  double patch_solve(int c, double depth_pred, double compliance, bool all);
   [[noreturn]] void fail(int step, const std::string& what) const;
 
   int m_nc;
@@ -197,7 +198,12 @@ private:
   TipPatch m_patch;
   bool m_patched = false;                                 ///< m_patch.present()
   std::vector<double> m_axial;                            ///< z_c per contact
+  double m_patch_angle = 0.0;                             ///< w_c / r [rad]
+  std::vector<std::vector<int>> m_patch_rows;             ///< per contact, fixed (z_c is)
+  std::vector<int> m_sectors;                             ///< scratch of place_patches
   std::vector<std::vector<int>> m_patch_cells;            ///< per contact, this step
+  /// Per contact and patch cell: a later contact's chain may read its response.
+  std::vector<std::vector<char>> m_read;
   std::vector<std::vector<PatchLink>> m_previous;         ///< per contact and patch cell
   std::vector<std::vector<BarResponse>> m_patch_response; ///< per contact and patch cell
   std::vector<PatchLink> m_last;                          ///< per cell, scratch of place_patches

@@ -31,6 +31,13 @@ void centres_within(double from, double to, double h, double& first, double& las
 } // namespace
 
 std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double angle) {
+  std::vector<int> sectors;
+  patch_sectors(cells, theta, angle, sectors);
+  return sectors;
+}
+
+void patch_sectors(const AbradableCells& cells, double theta, double angle,
+                   std::vector<int>& sectors) {
   width(angle, "angular width");
   const int home = cells.sector(theta); // refuses a non-finite angle
   const double turn = 2.0 * M_PI;
@@ -38,7 +45,7 @@ std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double
   double first = 0.0, last = 0.0;
   centres_within(a - 0.5 * angle, a + 0.5 * angle, cells.pitch(), first, last);
   const int n = cells.n_theta();
-  std::vector<int> sectors;
+  sectors.clear();
   if (!(last >= first)) {
     sectors.push_back(home);
   } else if (last - first + 1.0 >= n) {
@@ -50,7 +57,6 @@ std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double
       sectors.push_back(static_cast<int>(((i % n) + n) % n));
     std::sort(sectors.begin(), sectors.end());
   }
-  return sectors;
 }
 
 std::vector<int> patch_rows(const AbradableCells& cells, double z, double width_axial) {
@@ -95,6 +101,15 @@ double patch_compliant(const AbradableCells& cells, const std::vector<BarState>&
 double PatchCompliantSolve::operator()(const AbradableCells& cells,
                                        const std::vector<BarState>& from, double depth_pred,
                                        double compliance, std::vector<BarResponse>& bars) {
+  const double f = force(cells, from, depth_pred, compliance);
+  bars.resize(from.size());
+  for (size_t i = 0; i < from.size(); ++i)
+    bars[i] = response(cells, from[i], depth_pred, compliance, f);
+  return f;
+}
+
+double PatchCompliantSolve::force(const AbradableCells& cells, const std::vector<BarState>& from,
+                                  double depth_pred, double compliance) {
   const size_t n = from.size();
   if (n == 0) refuse("a patch over no cell");
   if (!(compliance >= 0.0)) refuse("compliance = " + message_number(compliance) + ", allowed >= 0");
@@ -154,9 +169,6 @@ double PatchCompliantSolve::operator()(const AbradableCells& cells,
       force = ((k + kh) * sum_elastic + sum_plastic) /
               ((k + kh) * (1.0 + compliance * (n_elastic * k)) + compliance * k * kh * n_plastic);
   }
-  bars.resize(n);
-  for (size_t i = 0; i < n; ++i)
-    bars[i] = cells.bar(from[i], (depth_pred - from[i].wear) - compliance * force);
   return force;
 }
 

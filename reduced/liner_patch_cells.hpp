@@ -66,6 +66,10 @@ struct TipPatch {
 /// The sectors, ascending and each once, whose centre lies in the closed
 /// window of `angle` [rad] (>= 0) centred on `theta` (finite) (header).
 std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double angle);
+/// patch_sectors into `sectors` (its capacity kept: the solve places every
+/// patch at every step).
+void patch_sectors(const AbradableCells& cells, double theta, double angle,
+                   std::vector<int>& sectors);
 
 /// The rows, ascending, whose centre lies in the window of `width`
 /// [length] (>= 0) centred on `z` (within the liner's axial extent) (header).
@@ -93,6 +97,16 @@ class PatchCompliantSolve {
 public:
   double operator()(const AbradableCells& cells, const std::vector<BarState>& from,
                     double depth_pred, double compliance, std::vector<BarResponse>& bars);
+  /// operator()'s F alone: a Gauss-Seidel sweep needs only the bars a later
+  /// contact's chain reads (their responses by `response`, the same bits).
+  double force(const AbradableCells& cells, const std::vector<BarState>& from, double depth_pred,
+               double compliance);
+  /// Bar `from`'s response at the patch's force F: the law at
+  /// depth_pred - p - c F (header).
+  static BarResponse response(const AbradableCells& cells, const BarState& from, double depth_pred,
+                              double compliance, double force) {
+    return cells.bar(from, (depth_pred - from.wear) - compliance * force);
+  }
 
 private:
   std::vector<BarState> m_from; ///< the states the breakpoints belong to
