@@ -74,6 +74,17 @@ DiskSolution disk_minimum(const Eigen::Matrix2d& a, const Eigen::Vector2d& b, do
   return d;
 }
 
+/// Whether two ascending lists share an element.
+bool sorted_lists_meet(const std::vector<int>& a, const std::vector<int>& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    (*i < *j) ? ++i : ++j;
+  }
+  return false;
+}
+
 } // namespace
 
 LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
@@ -130,7 +141,10 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
     m_previous.assign(m_nc, {});
     m_patch_response.assign(m_nc, {});
     m_patch_solve.assign(m_nc, PatchCompliantSolve{});
-    m_last.assign(static_cast<size_t>(m_cells.n_cells()), PatchLink{});
+    m_patch_sectors.assign(m_nc, {});
+    for (int c = 0; c < m_nc; ++c)
+      for (int e = 0; e < m_nc; ++e)
+        m_rows_meet.push_back(sorted_lists_meet(m_patch_rows[c], m_patch_rows[e]));
   }
 }
 
@@ -162,29 +176,46 @@ std::vector<int> LinerContactSolve::cells_under(int c, double t) const {
 }
 
 void LinerContactSolve::place_patches(double t) {
+  const int n_theta = m_cells.n_theta();
   for (int c = 0; c < m_nc; ++c) {
     // patch_cells (liner_patch_cells.hpp) without its allocations: the rows
     // are fixed, the sectors move with the casing-frame angle.
-    patch_sectors(m_cells, m_omega * t + m_phi[c], m_patch_angle, m_sectors);
+    std::vector<int>& sectors = m_patch_sectors[c];
+    patch_sectors(m_cells, m_omega * t + m_phi[c], m_patch_angle, sectors);
     std::vector<int>& cells = m_patch_cells[c];
     cells.clear();
     for (int j : m_patch_rows[c])
-      for (int i : m_sectors) cells.push_back(j * m_cells.n_theta() + i);
+      for (int i : sectors) cells.push_back(j * n_theta + i);
     const size_t n = cells.size();
-    m_previous[c].resize(n);
+    m_previous[c].assign(n, PatchLink{});
     m_read[c].assign(n, 0);
-    m_patch_response[c].assign(n, BarResponse{});
-    for (size_t i = 0; i < n; ++i) {
-      // Until its first evaluation a response holds the cell's committed state.
-      m_patch_response[c][i].state = m_cells.state(cells[i]);
-      PatchLink& last = m_last[static_cast<size_t>(cells[i])];
-      m_previous[c][i] = last;
-      if (last.contact >= 0) m_read[last.contact][last.position] = 1;
-      last = PatchLink{c, static_cast<int>(i)};
+    m_patch_response[c].resize(n);
+    // Each cell's latest earlier contact over it: only patches that share a
+    // row and a sector can share a cell, and both lists are ascending.
+    size_t unlinked = n;
+    for (int e = c - 1; e >= 0 && unlinked > 0; --e) {
+      if (!m_rows_meet[static_cast<size_t>(c * m_nc + e)] ||
+          !sorted_lists_meet(sectors, m_patch_sectors[e]))
+        continue;
+      const std::vector<int>& earlier = m_patch_cells[e];
+      for (size_t i = 0; i < n; ++i) {
+        if (m_previous[c][i].contact >= 0) continue;
+        const auto at = std::lower_bound(earlier.begin(), earlier.end(), cells[i]);
+        if (at == earlier.end() || *at != cells[i]) continue;
+        const int position = static_cast<int>(at - earlier.begin());
+        m_previous[c][i] = PatchLink{e, position};
+        --unlinked;
+        if (!m_read[e][position]) {
+          // Read by a chain before its first evaluation, a response holds
+          // the cell's committed state (the grow test of a contact that
+          // joins in the same pass as e).
+          m_read[e][position] = 1;
+          m_patch_response[e][position] = BarResponse{};
+          m_patch_response[e][position].state = m_cells.state(cells[i]);
+        }
+      }
     }
   }
-  for (int c = 0; c < m_nc; ++c)
-    for (int cell : m_patch_cells[c]) m_last[static_cast<size_t>(cell)] = PatchLink{};
 }
 
 BarState LinerContactSolve::patch_start_state(int c, int position) const {
@@ -315,7 +346,9 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
   // threshold, so the unchained state is the generous test).
   bool any = false;
   for (int c = 0; c < m_nc; ++c) {
-    m_active[c] = -predicted(3 * c) - least_wear(c, false) > 0.0 || m_lambda(3 * c) > 0.0;
+    // Wear is >= 0: a tip short of the unworn surface reads no cell.
+    m_active[c] = (-predicted(3 * c) > 0.0 && -predicted(3 * c) - least_wear(c, false) > 0.0) ||
+                  m_lambda(3 * c) > 0.0;
     any = any || m_active[c];
   }
   for (int c = 0; c < m_nc; ++c)
@@ -352,7 +385,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
         if (m_active[c]) m_y.noalias() += m_w.middleCols<3>(3 * c) * m_lambda.segment<3>(3 * c);
       bool grown = false;
       for (int c = 0; c < m_nc; ++c)
-        if (!m_active[c] && -m_y(3 * c) - least_wear(c, true) > 0.0) {
+        if (!m_active[c] && -m_y(3 * c) > 0.0 && -m_y(3 * c) - least_wear(c, true) > 0.0) {
           m_active[c] = 1;
           grown = true;
         }
@@ -377,7 +410,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
     const double wnn = m_w(3 * c, 3 * c);
     if (m_patched) {
       const double depth = -(g - wnn * m_lambda(3 * c));
-      if (!m_active[c] && depth < least_wear(c, true)) {
+      if (!m_active[c] && (depth < 0.0 || depth < least_wear(c, true))) {
         // Short of every bar (lambda_n,c = 0): the solve's force and every
         // bar's is exactly 0, its residual |lambda_n,c|, its energy 0.
         residual = std::max(residual, std::abs(m_lambda(3 * c)));

@@ -200,13 +200,13 @@ private:
   std::vector<double> m_axial;                            ///< z_c per contact
   double m_patch_angle = 0.0;                             ///< w_c / r [rad]
   std::vector<std::vector<int>> m_patch_rows;             ///< per contact, fixed (z_c is)
-  std::vector<int> m_sectors;                             ///< scratch of place_patches
+  std::vector<char> m_rows_meet;                          ///< c n_c + e: their rows share one
+  std::vector<std::vector<int>> m_patch_sectors;          ///< per contact, this step
   std::vector<std::vector<int>> m_patch_cells;            ///< per contact, this step
   /// Per contact and patch cell: a later contact's chain may read its response.
   std::vector<std::vector<char>> m_read;
   std::vector<std::vector<PatchLink>> m_previous;         ///< per contact and patch cell
   std::vector<std::vector<BarResponse>> m_patch_response; ///< per contact and patch cell
-  std::vector<PatchLink> m_last;                          ///< per cell, scratch of place_patches
   std::vector<BarState> m_from;                           ///< scratch of patch_solve
   std::vector<PatchCompliantSolve> m_patch_solve;         ///< per contact
   double m_contact_work = 0.0, m_normal_work = 0.0, m_elastic_energy = 0.0;
