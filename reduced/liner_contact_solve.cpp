@@ -134,6 +134,7 @@ LinerContactSolve::LinerContactSolve(int n_contacts, double dt, double mu,
   m_active.assign(m_nc, 0);
   m_response.assign(m_nc, BarResponse{});
   if (m_patched) {
+    if (m_mu > 0.0) m_slip_set.emplace(m_mu);
     m_patch_angle = m_patch.circumferential / m_cells.geometry().radius;
     for (int c = 0; c < m_nc; ++c) m_patch_rows.push_back(patch_rows(m_cells, m_axial[c], m_patch.axial));
     m_patch_cells.assign(m_nc, {});
@@ -177,6 +178,7 @@ std::vector<int> LinerContactSolve::cells_under(int c, double t) const {
 
 void LinerContactSolve::place_patches(double t) {
   const int n_theta = m_cells.n_theta();
+  m_chained = false;
   for (int c = 0; c < m_nc; ++c) {
     // patch_cells (liner_patch_cells.hpp) without its allocations: the rows
     // are fixed, the sectors move with the casing-frame angle.
@@ -204,6 +206,7 @@ void LinerContactSolve::place_patches(double t) {
         if (at == earlier.end() || *at != cells[i]) continue;
         const int position = static_cast<int>(at - earlier.begin());
         m_previous[c][i] = PatchLink{e, position};
+        m_chained = true;
         --unlinked;
         if (!m_read[e][position]) {
           // Read by a chain before its first evaluation, a response holds
@@ -216,6 +219,22 @@ void LinerContactSolve::place_patches(double t) {
       }
     }
   }
+}
+
+bool LinerContactSolve::direct_start(const Eigen::VectorXd& predicted) {
+  // Unchained, each patch's bars start from their committed states.
+  const auto piece_at = [&](int c, double depth) {
+    const std::vector<int>& cells = m_patch_cells[c];
+    m_from.resize(cells.size());
+    for (size_t i = 0; i < cells.size(); ++i) m_from[i] = m_cells.state(cells[i]);
+    return m_patch_solve[c].piece(m_cells, m_from, depth);
+  };
+  m_start = m_lambda;
+  if (!m_slip_set->solve(m_w, predicted, piece_at, m_start)) return false;
+  m_lambda = m_start;
+  for (int c = 0; c < m_nc; ++c)
+    if (m_lambda(3 * c) > 0.0) m_active[c] = 1;
+  return true;
 }
 
 BarState LinerContactSolve::patch_start_state(int c, int position) const {
@@ -357,6 +376,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
       m_state[c] = ReducedContactState::open;
     }
   if (any) {
+    if (m_slip_set && !m_chained) direct_start(predicted);
     for (;;) {
       int sweeps = 0, at_floor = 0;
       for (;;) {

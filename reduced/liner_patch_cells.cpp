@@ -108,27 +108,55 @@ double PatchCompliantSolve::operator()(const AbradableCells& cells,
   return f;
 }
 
-double PatchCompliantSolve::force(const AbradableCells& cells, const std::vector<BarState>& from,
-                                  double depth_pred, double compliance) {
-  const size_t n = from.size();
-  if (n == 0) refuse("a patch over no cell");
-  if (!(compliance >= 0.0)) refuse("compliance = " + message_number(compliance) + ", allowed >= 0");
-  const double k = cells.stiffness(), kh = cells.hardening_stiffness();
-  const auto yield_depth = [k](const BarState& s) { return s.wear + s.yield_force / k; };
+void PatchCompliantSolve::place(const AbradableCells& cells, const std::vector<BarState>& from) {
+  if (from.empty()) refuse("a patch over no cell");
+  const double k = cells.stiffness();
   const auto same = [](const BarState& a, const BarState& b) {
     return a.wear == b.wear && a.yield_force == b.yield_force;
   };
-  if (!std::equal(from.begin(), from.end(), m_from.begin(), m_from.end(), same)) {
-    // The breakpoints of G (header), sorted.
-    m_from = from;
-    m_breaks.clear();
-    for (const BarState& s : from) {
-      m_breaks.push_back(s.wear);
-      m_breaks.push_back(yield_depth(s));
-    }
-    std::sort(m_breaks.begin(), m_breaks.end());
-    m_g.assign(m_breaks.size(), std::numeric_limits<double>::quiet_NaN());
+  if (std::equal(from.begin(), from.end(), m_from.begin(), m_from.end(), same)) return;
+  // The breakpoints of G (header), sorted.
+  m_from = from;
+  m_breaks.clear();
+  for (const BarState& s : from) {
+    m_breaks.push_back(s.wear);
+    m_breaks.push_back(s.wear + s.yield_force / k);
   }
+  std::sort(m_breaks.begin(), m_breaks.end());
+  m_g.assign(m_breaks.size(), std::numeric_limits<double>::quiet_NaN());
+}
+
+LinearPiece PatchCompliantSolve::piece(const AbradableCells& cells,
+                                       const std::vector<BarState>& from, double depth) {
+  place(cells, from);
+  const double k = cells.stiffness(), kh = cells.hardening_stiffness();
+  const auto next = std::upper_bound(m_breaks.begin(), m_breaks.end(), depth);
+  LinearPiece p;
+  p.upper = next == m_breaks.end() ? std::numeric_limits<double>::infinity() : *next;
+  if (next == m_breaks.begin()) {
+    p.lower = -std::numeric_limits<double>::infinity();
+    return p;
+  }
+  p.lower = *(next - 1);
+  for (const BarState& s : from) {
+    if (!(s.wear <= p.lower)) continue;
+    if (s.wear + s.yield_force / k <= p.lower) {
+      p.slope += k * kh / (k + kh);
+      p.intercept += k * (s.yield_force - kh * s.wear) / (k + kh);
+    } else {
+      p.slope += k;
+      p.intercept -= k * s.wear;
+    }
+  }
+  return p;
+}
+
+double PatchCompliantSolve::force(const AbradableCells& cells, const std::vector<BarState>& from,
+                                  double depth_pred, double compliance) {
+  place(cells, from);
+  if (!(compliance >= 0.0)) refuse("compliance = " + message_number(compliance) + ", allowed >= 0");
+  const double k = cells.stiffness(), kh = cells.hardening_stiffness();
+  const auto yield_depth = [k](const BarState& s) { return s.wear + s.yield_force / k; };
   // The piece holding the root starts at the largest b with
   // c G(b) <= d~ - b, G(b) from wear differences only (no d~).
   const auto at_or_past = [&](size_t j) {

@@ -86,6 +86,17 @@ std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z
 double patch_compliant(const AbradableCells& cells, const std::vector<BarState>& from,
                        double depth_pred, double compliance, std::vector<BarResponse>& bars);
 
+/// One linear piece of a patch's law G (header): G(d) = slope d + intercept
+/// for d in [lower, upper]. Below every bar: slope = intercept = 0,
+/// lower = -infinity, upper the least wear; past every breakpoint upper =
+/// +infinity.
+struct LinearPiece {
+  double slope = 0.0;
+  double intercept = 0.0;
+  double lower = 0.0;
+  double upper = 0.0;
+};
+
 /// patch_compliant for one patch solved again and again (the sweeps of a
 /// Gauss-Seidel step, d~ changing, the bars' states mostly not): the
 /// sorted breakpoints and each G(b) the root search has evaluated are kept
@@ -103,12 +114,21 @@ public:
                double compliance);
   /// Bar `from`'s response at the patch's force F: the law at
   /// depth_pred - p - c F (header).
+  /// The piece of G holding `depth` (the last with lower <= depth): on it
+  /// the touching bars E (p_i <= lower) and the yielding ones P
+  /// (p_i + F_Y,i / k <= lower) give slope = n_E k + n_P k k_H / (k + k_H)
+  /// and intercept = -sum_E k p_i + sum_P k (F_Y,i - k_H p_i) / (k + k_H)
+  /// (abradable_cells.hpp's bar law, summed).
+  LinearPiece piece(const AbradableCells& cells, const std::vector<BarState>& from, double depth);
   static BarResponse response(const AbradableCells& cells, const BarState& from, double depth_pred,
                               double compliance, double force) {
     return cells.bar(from, (depth_pred - from.wear) - compliance * force);
   }
 
 private:
+  /// The breakpoints of `from`, sorted, kept while `from` stays the same.
+  void place(const AbradableCells& cells, const std::vector<BarState>& from);
+
   std::vector<BarState> m_from; ///< the states the breakpoints belong to
   std::vector<double> m_breaks; ///< sorted
   std::vector<double> m_g;      ///< G(m_breaks[j]), NaN until evaluated
