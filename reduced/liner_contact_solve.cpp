@@ -226,7 +226,15 @@ bool LinerContactSolve::direct_start(const Eigen::VectorXd& predicted) {
   const auto piece_at = [&](int c, double depth) {
     const std::vector<int>& cells = m_patch_cells[c];
     m_from.resize(cells.size());
-    for (size_t i = 0; i < cells.size(); ++i) m_from[i] = m_cells.state(cells[i]);
+    double least = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < cells.size(); ++i) {
+      m_from[i] = m_cells.state(cells[i]);
+      least = std::min(least, m_from[i].wear);
+    }
+    // Short of every bar: PatchCompliantSolve::piece's answer without its
+    // sorted breakpoints (the least one is the least wear, F_Y > 0).
+    if (depth < least)
+      return LinearPiece{0.0, 0.0, -std::numeric_limits<double>::infinity(), least};
     return m_patch_solve[c].piece(m_cells, m_from, depth);
   };
   m_start = m_lambda;
@@ -356,7 +364,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
   const std::vector<ReducedContactState> before = m_state;
   const double t = step * m_dt;
   for (int c = 0; c < m_nc; ++c) {
-    m_cell[c] = cell(c, t);
+    if (!m_patched) m_cell[c] = cell(c, t); // a patch's cells are placed below
     m_active[c] = 0;
   }
   if (m_patched) place_patches(t);

@@ -39,7 +39,7 @@ std::vector<int> patch_sectors(const AbradableCells& cells, double theta, double
 void patch_sectors(const AbradableCells& cells, double theta, double angle,
                    std::vector<int>& sectors) {
   width(angle, "angular width");
-  const int home = cells.sector(theta); // refuses a non-finite angle
+  if (!std::isfinite(theta)) cells.sector(theta); // refuses it
   const double turn = 2.0 * M_PI;
   const double a = theta - turn * std::floor(theta / turn);
   double first = 0.0, last = 0.0;
@@ -47,7 +47,7 @@ void patch_sectors(const AbradableCells& cells, double theta, double angle,
   const int n = cells.n_theta();
   sectors.clear();
   if (!(last >= first)) {
-    sectors.push_back(home);
+    sectors.push_back(cells.sector(theta));
   } else if (last - first + 1.0 >= n) {
     for (int i = 0; i < n; ++i)
       sectors.push_back(i);
