@@ -41,6 +41,7 @@
 
 #include "coulomb_gauss_seidel.hpp"
 #include "coulomb_slip_set.hpp"
+#include "random_delassus.hpp"
 #include "reduced_coulomb_certificate.hpp"
 
 namespace rsi {
@@ -53,19 +54,10 @@ constexpr long double eps_ld = std::numeric_limits<long double>::epsilon();
 static_assert(std::numeric_limits<long double>::digits >= 64,
               "the residuals need extended precision");
 
-/// W = dt^2 B M^-1 B^T (as test_coulomb_gauss_seidel.cpp): random SPD M (n
-/// dofs), random B (rows x n, full row rank for rows < n): W SPD.
+/// W = dt^2 B M^-1 B^T (as test_coulomb_gauss_seidel.cpp), dt = 5e-7:
+/// random SPD M (n dofs), random B (rows x n): W SPD (random_delassus.hpp).
 Eigen::MatrixXd random_w(int n, int rows, std::mt19937& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  Eigen::MatrixXd a(n, n), b(rows, n);
-  for (int i = 0; i < n * n; ++i)
-    a(i) = normal(rng);
-  for (int i = 0; i < rows * n; ++i)
-    b(i) = normal(rng);
-  const Eigen::MatrixXd mass = a * a.transpose() / n + Eigen::MatrixXd::Identity(n, n);
-  const Eigen::MatrixXd w =
-      5e-7 * 5e-7 * (b * Eigen::LLT<Eigen::MatrixXd>(mass).solve(b.transpose()));
-  return 0.5 * (w + w.transpose());
+  return random_delassus(n, rows, 5e-7 * 5e-7, rng);
 }
 
 /// Gaps uniform in [-1, 1] um, every fourth shifted up 1 um (some open, some

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "abradable_cells.hpp"
+#include "abradable_cells_fixture.hpp"
 #include "abradable_liner.hpp"
 #include "liner_patch_cells.hpp"
 
@@ -26,27 +27,8 @@ namespace {
 
 constexpr double eps = std::numeric_limits<double>::epsilon();
 
-AbradableCellsGeometry geometry() {
-  AbradableCellsGeometry g;
-  g.radius = 250.0;
-  g.thickness = 2.0;
-  g.n_theta = 8;
-  g.n_axial = 4;
-  g.z_min = 0.0;
-  g.z_max = 8.0;
-  return g;
-}
-
-AbradableCellsMaterial material(double hardening = 300.0) {
-  AbradableCellsMaterial m;
-  m.young = 1000.0;
-  m.yield = 10.0;
-  m.hardening = hardening;
-  return m;
-}
-
 AbradableLiner reference_liner(double hardening) {
-  const AbradableCellsGeometry g = geometry();
+  const AbradableCellsGeometry g = abradable_test_geometry();
   LinerGeometry rg;
   rg.radius = g.radius;
   rg.thickness = g.thickness;
@@ -68,7 +50,7 @@ AbradableLiner reference_liner(double hardening) {
 // yield line), and zero force once the indenter is back above p.
 TEST(AbradableCells, LoadUnloadAgainstClosedForm) {
   for (double hardening : {300.0, 0.0}) {
-    AbradableCells cells(geometry(), material(hardening));
+    AbradableCells cells(abradable_test_geometry(), abradable_test_material(hardening));
     const double a = 250.0 * (2.0 * M_PI / 8.0) * 2.0;
     const double k = 1000.0 * a / 2.0, kh = hardening * a / 2.0, fy = 10.0 * a;
     EXPECT_NEAR(cells.stiffness(), k, 4 * eps * k);
@@ -100,7 +82,7 @@ TEST(AbradableCells, LoadUnloadAgainstClosedForm) {
 // work agree to round-off (the two derivations are algebraically equal).
 TEST(AbradableCells, MatchesTheReferenceKernel) {
   for (double hardening : {300.0, 0.0}) {
-    AbradableCells cells(geometry(), material(hardening));
+    AbradableCells cells(abradable_test_geometry(), abradable_test_material(hardening));
     AbradableLiner liner = reference_liner(hardening);
     unsigned seed = 7;
     const auto uniform = [&seed]() {
@@ -144,19 +126,19 @@ TEST(AbradableCells, MatchesTheReferenceKernel) {
 }
 
 TEST(AbradableCells, CellMapAndRefusals) {
-  AbradableCells cells(geometry(), material());
+  AbradableCells cells(abradable_test_geometry(), abradable_test_material());
   EXPECT_EQ(cells.sector(0.0), 0);
   EXPECT_EQ(cells.sector(-1e-18), 7);
   EXPECT_EQ(cells.sector(2.0 * M_PI + 0.1), 0);
   EXPECT_EQ(cells.row(8.0), 3);
   EXPECT_EQ(cells.row(0.0), 0);
   EXPECT_THROW(cells.row(8.5), std::invalid_argument);
-  AbradableCellsGeometry g = geometry();
+  AbradableCellsGeometry g = abradable_test_geometry();
   g.thickness = 300.0;
-  EXPECT_THROW(AbradableCells(g, material()), std::invalid_argument);
-  AbradableCellsMaterial m = material();
+  EXPECT_THROW(AbradableCells(g, abradable_test_material()), std::invalid_argument);
+  AbradableCellsMaterial m = abradable_test_material();
   m.hardening = -1.0;
-  EXPECT_THROW(AbradableCells(geometry(), m), std::invalid_argument);
+  EXPECT_THROW(AbradableCells(abradable_test_geometry(), m), std::invalid_argument);
   BarResponse lower;
   lower.state.wear = -1.0;
   EXPECT_THROW(cells.commit(0, lower), std::logic_error);
@@ -166,7 +148,7 @@ TEST(AbradableCells, CellMapAndRefusals) {
 // liner (dtheta = pi/4, r = 250, rows of dz = 2 over [0, 8], centres 1, 3,
 // 5, 7). Widths are given as multiples of r dtheta, so a = multiple x dtheta.
 TEST(LinerPatchCells, SelectionByHand) {
-  AbradableCells cells(geometry(), material());
+  AbradableCells cells(abradable_test_geometry(), abradable_test_material());
   const double d = cells.pitch(), r = 250.0;
   using V = std::vector<int>;
   // Inside sector 0: [0.2, 0.4] dtheta holds no centre -> the sector of theta.
@@ -219,7 +201,7 @@ TEST(LinerPatchCells, SelectionByHand) {
 // on five bars: fresh, hardened, worn by different amounts, so that the
 // depths sweep them through off, elastic and plastic; c k = 0, 0.1, 1, 1e3.
 TEST(LinerPatchCells, JointRootAgainstBisection) {
-  AbradableCells cells(geometry(), material());
+  AbradableCells cells(abradable_test_geometry(), abradable_test_material());
   const double k = cells.stiffness(), kh = cells.hardening_stiffness();
   const double fy0 = 10.0 * cells.area(), dy = fy0 / k; // the fresh yield force and depth
   std::vector<BarState> from;
@@ -292,7 +274,7 @@ TEST(LinerPatchCells, JointRootAgainstBisection) {
 // bit. A memory kept across a change of state would put the root on the
 // old G's piece. bar_force is bar().force bit for bit (the same operations).
 TEST(LinerPatchCells, RepeatedSolveIsTheOneShotSolve) {
-  AbradableCells cells(geometry(), material());
+  AbradableCells cells(abradable_test_geometry(), abradable_test_material());
   const double k = cells.stiffness(), kh = cells.hardening_stiffness();
   const double fy0 = 10.0 * cells.area(), dy = fy0 / k;
   std::vector<BarState> a;
@@ -338,7 +320,7 @@ TEST(LinerPatchCells, RepeatedSolveIsTheOneShotSolve) {
 // classification's rounding: 8 eps (F + k (|delta~| + F_Y / k) / (1 + c k)).
 TEST(LinerPatchCells, OneBarIsTheCompliantBar) {
   for (double hardening : {300.0, 0.0}) {
-    AbradableCells cells(geometry(), material(hardening));
+    AbradableCells cells(abradable_test_geometry(), abradable_test_material(hardening));
     const double k = cells.stiffness(), fy0 = 10.0 * cells.area();
     unsigned seed = 17;
     const auto uniform = [&seed]() {

@@ -24,13 +24,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
 #include "abradable_cells.hpp"
+#include "abradable_cells_fixture.hpp"
 #include "liner_patch_cells.hpp"
 #include "liner_slip_set.hpp"
+#include "random_delassus.hpp"
 
 namespace rsi {
 namespace {
@@ -39,18 +40,7 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 using VectorL = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
 
 AbradableCells cells_with(double hardening) {
-  AbradableCellsGeometry g;
-  g.radius = 250.0;
-  g.thickness = 2.0;
-  g.n_theta = 8;
-  g.n_axial = 4;
-  g.z_min = 0.0;
-  g.z_max = 8.0;
-  AbradableCellsMaterial m;
-  m.young = 1000.0;
-  m.yield = 10.0;
-  m.hardening = hardening;
-  return AbradableCells(g, m);
+  return AbradableCells(abradable_test_geometry(), abradable_test_material(hardening));
 }
 
 /// Five bars worn by 0 to 6 yield depths, each hardened by its wear.
@@ -169,18 +159,10 @@ TEST(LinerSlipSet, DecoupledContactIsThePatchCompliantSolve) {
     expect_decoupled(cells, worn_bars(cells, {0.0, 0.3, 1.0, 2.5, 6.0}), depth);
 }
 
-/// W = B M^-1 B^T scaled to normal entries about 1e-5 mm/N: random SPD M,
-/// random B (rows < n: full row rank).
+/// W = B M^-1 B^T scaled to normal entries about 1e-5 mm/N
+/// (random_delassus.hpp).
 Eigen::MatrixXd random_w(int n, int rows, std::mt19937& rng) {
-  std::normal_distribution<double> normal(0.0, 1.0);
-  Eigen::MatrixXd a(n, n), b(rows, n);
-  for (int i = 0; i < n * n; ++i)
-    a(i) = normal(rng);
-  for (int i = 0; i < rows * n; ++i)
-    b(i) = normal(rng);
-  const Eigen::MatrixXd mass = a * a.transpose() / n + Eigen::MatrixXd::Identity(n, n);
-  const Eigen::MatrixXd w = 1e-5 / n * (b * Eigen::LLT<Eigen::MatrixXd>(mass).solve(b.transpose()));
-  return 0.5 * (w + w.transpose());
+  return random_delassus(n, rows, 1e-5 / n, rng);
 }
 
 // Random coupled problems: 8 contacts, each over 5 bars worn by 0 to 3 yield
