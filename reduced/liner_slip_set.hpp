@@ -21,14 +21,16 @@
 // at the solution) names the piece it lies on; a contact off its piece
 // moves to that piece and the slip set is solved again (a Newton iteration
 // on the piecewise linear law, active-set style), until no piece changes.
+// A contact the slip set closes on the rigid stand-in (d = the least wear up
+// to round-off, maybe just below it) moves onto the first bars' piece.
 //
 // It declines (false, lambda untouched) when the slip set declines (stick,
-// a reversal, a singular system, ...), when a contact that carries force
-// lies on a piece of slope 0 (a perfectly plastic patch, H = 0: a force
-// independent of the depth, no series spring), when a contact that `piece`
-// cannot place (no cells: piece.lower = piece.upper = NaN) carries force,
-// or after 20 pieces' solves. Its answer need not be trusted: the
-// Gauss-Seidel starts from it and stops only by its own rule.
+// a reversal, a singular system, ...), when a contact lies on a piece of
+// slope 0 over touching bars (a perfectly plastic patch, H = 0: a force
+// independent of the depth, no series spring), when `piece_at` returns a
+// piece with a NaN or infinite slope or intercept or a NaN bound, or after
+// 20 pieces' solves. Its answer need not be trusted: the Gauss-Seidel starts
+// from it and stops only by its own rule.
 
 #include <functional>
 
