@@ -165,6 +165,7 @@ void LinerContactSolve::start() {
   m_contact_work = m_normal_work = m_elastic_energy = 0.0;
   m_max_law_residual = 0.0;
   m_sweeps = 0;
+  m_direct_starts = 0;
 }
 
 int LinerContactSolve::cell(int c, double t) const {
@@ -384,7 +385,7 @@ void LinerContactSolve::solve(const Eigen::VectorXd& predicted, int step, StepRe
       m_state[c] = ReducedContactState::open;
     }
   if (any) {
-    if (m_slip_set && !m_chained) direct_start(predicted);
+    if (m_slip_set && !m_chained && direct_start(predicted)) ++m_direct_starts;
     for (;;) {
       int sweeps = 0, at_floor = 0;
       for (;;) {

@@ -112,14 +112,15 @@ public:
   /// contact's chain reads (their responses by `response`, the same bits).
   double force(const AbradableCells& cells, const std::vector<BarState>& from, double depth_pred,
                double compliance);
-  /// Bar `from`'s response at the patch's force F: the law at
-  /// depth_pred - p - c F (header).
   /// The piece of G holding `depth` (the last with lower <= depth): on it
-  /// the touching bars E (p_i <= lower) and the yielding ones P
-  /// (p_i + F_Y,i / k <= lower) give slope = n_E k + n_P k k_H / (k + k_H)
-  /// and intercept = -sum_E k p_i + sum_P k (F_Y,i - k_H p_i) / (k + k_H)
+  /// the touching elastic bars E (p_i <= lower < p_i + F_Y,i / k) and the
+  /// yielding ones P (p_i + F_Y,i / k <= lower) give
+  /// slope = n_E k + n_P k k_H / (k + k_H) and
+  /// intercept = -sum_E k p_i + sum_P k (F_Y,i - k_H p_i) / (k + k_H)
   /// (abradable_cells.hpp's bar law, summed).
   LinearPiece piece(const AbradableCells& cells, const std::vector<BarState>& from, double depth);
+  /// Bar `from`'s response at the patch's force F: the law at
+  /// depth_pred - p - c F (header).
   static BarResponse response(const AbradableCells& cells, const BarState& from, double depth_pred,
                               double compliance, double force) {
     return cells.bar(from, (depth_pred - from.wear) - compliance * force);

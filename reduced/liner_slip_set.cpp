@@ -62,11 +62,15 @@ bool LinerSlipSet::solve(const Eigen::MatrixXd& w, const Eigen::VectorXd& predic
     for (int c = 0; c < nc; ++c) {
       const double d = depth(c);
       LinearPiece q = piece_at(c, d);
+      if (!finite_piece(q)) return false;
+      const bool below_every_bar = q.lower == -std::numeric_limits<double>::infinity();
       // Closed on the rigid stand-in (d = the least wear up to round-off):
       // onto the first bars' piece.
-      if (m_lambda(3 * c) > 0.0 && !(q.slope > 0.0) && finite_piece(q))
+      if (m_lambda(3 * c) > 0.0 && !(q.slope > 0.0) && below_every_bar)
         q = piece_at(c, std::max(d, q.upper));
       if (!finite_piece(q)) return false;
+      // A flat piece over touching bars (H = 0): no series spring (header).
+      if (!(q.slope > 0.0) && q.lower != -std::numeric_limits<double>::infinity()) return false;
       if (same_piece(q, m_piece[c])) continue;
       m_piece[c] = q;
       moved = true;

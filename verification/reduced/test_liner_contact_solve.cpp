@@ -519,7 +519,9 @@ TEST(LinerContactSolve, ZeroWidthPatchIsTheOneCellSolve) {
   // otherwise to the rounding of the classification and of the bar law at
   // delta~ - c F (a few eps (1 + c k) of the force, c k ~ 1 here), which
   // the 40 steps' wear and the sweeps' stopping rule (1e-14 of the largest
-  // multiplier) carry: 1e-12 of the largest multiplier.
+  // multiplier; the patch path's sweeps may start from the direct solve of
+  // liner_slip_set.hpp and the one-cell path's do not, both stop by that
+  // rule) carry: 1e-12 of the largest multiplier.
   LinerContactSolve narrow(nc, 1e-3, 0.2, cells, patch_layout(1e-9 * 24.5, 1e-9 * 5.0));
   LinerContactSolve again(nc, 1e-3, 0.2, cells, none);
   run_alongside(narrow, again, w, 40, 61, difference, force);
@@ -547,6 +549,41 @@ TEST(LinerContactSolve, PatchDenseYieldingWithFrictionCertifies) {
     EXPECT_LE(solve.max_law_residual(), 1e-10) << "mu " << mu;
     EXPECT_GT(plastic, 0.0);
   }
+}
+
+// Dense W, friction, patches 1.2 rad apart (no shared cell) under a
+// casing that slides 5 mm a step past the tips: the steps start from the
+// direct solve (liner_slip_set.hpp), and the Gauss-Seidel's stopping rule
+// and certificate then hold as in PatchDenseYieldingWithFrictionCertifies.
+TEST(LinerContactSolve, PatchDirectStartCertifies) {
+  const int nc = 5;
+  const AbradableCells cells(fine_geometry(), material());
+  const Eigen::MatrixXd w = dense_w(nc, 71, 0.5 / cells.stiffness());
+  LinerContactLayout l = patch_layout(60.0, 8.0);
+  l.polar_angle = {0.1, 1.3, 2.5, 3.7, 4.9};
+  LinerContactSolve solve(nc, 1e-3, 0.3, cells, l);
+  solve.set_contact_matrix(w);
+  std::srand(79);
+  double plastic = 0.0;
+  for (int step = 1; step <= 50; ++step) {
+    Eigen::VectorXd predicted = Eigen::VectorXd::Random(3 * nc) * 0.05;
+    for (int c = 0; c < nc; ++c) {
+      predicted(3 * c) -= 0.05;
+      predicted(3 * c + 2) += 5.0;
+    }
+    StepReport report;
+    solve.solve(predicted, step, report);
+    EXPECT_LE(report.max_cone_violation, 1e-12 * solve.lambda_next().cwiseAbs().maxCoeff());
+    EXPECT_LE(report.max_stick_slip_residual, 1e-9) << "step " << step;
+    EXPECT_GE(solve.plastic_work(), plastic);
+    plastic = solve.plastic_work();
+  }
+  std::printf("patch, direct start: %ld of 50 steps, %ld sweeps, law residual %.3g, W_plastic "
+              "%.6g\n",
+              solve.direct_starts(), solve.sweeps(), solve.max_law_residual(), plastic);
+  EXPECT_GT(solve.direct_starts(), 0);
+  EXPECT_LE(solve.max_law_residual(), 1e-10);
+  EXPECT_GT(plastic, 0.0);
 }
 
 } // namespace
