@@ -36,7 +36,8 @@
 #     4 eps (the same products in another order).
 #  3. The wear: some cell worn, W_plastic in the rows never decreasing, the
 #     summary's max depth equal to wear.csv's largest depth and its lobe
-#     count equal to the count of data/README.md's rule, recomputed here.
+#     count equal to the count of data/README.md's rule, recomputed here
+#     (peaks standing out a tenth of the deepest cell).
 #  4. A blade that starts inside the liner (a constant gap of -0.05 mm, 0.1
 #     revolution): MacNeal's massless boundary is in balance with loaded
 #     bars at t = 0, whose energy is in E0; the balance closes to the same
@@ -130,18 +131,35 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what)
     failures += 0 if ok else 1
 
-# The rule of data/README.md, written again: runs of equal depth deeper
-# than both neighbours and than half the deepest, per row, the most.
+# The rule of data/README.md, written again: per row, peaks (runs of equal
+# depth deeper than both sides) that stand out at least a tenth of the
+# deepest cell: walking each way to the first cell ranked above the peak
+# (deeper, or as deep and earlier), the higher of the two least depths met
+# is its base (the ring's least depth if none ranks above); the most over
+# the rows.
 def lobes(ring, deepest):
     n = len(ring)
-    starts = [i for i in range(n) if ring[i] != ring[i - 1]]
-    if not starts:
-        return 1 if deepest > 0 and ring[0] > deepest / 2 else 0
+    above = lambda a, b: ring[a] > ring[b] or (ring[a] == ring[b] and a < b)
     count = 0
-    for s_i, s in enumerate(starts):
-        e = starts[(s_i + 1) % len(starts)]  # next run's start
-        before, after, v = ring[s - 1], ring[e], ring[s]
-        count += v > before and v > after and v > deepest / 2
+    for s in range(n):
+        if ring[s - 1] == ring[s]:
+            continue
+        e = s
+        while ring[(e + 1) % n] == ring[s]:
+            e += 1
+        if ring[s - 1] > ring[s] or ring[(e + 1) % n] > ring[s]:
+            continue
+        top = min(i % n for i in range(s, e + 1))
+        bases = []
+        for cells in ([(s - k) % n for k in range(1, n)], [(e + k) % n for k in range(1, n)]):
+            least = ring[s]
+            for c in cells:
+                if above(c, top):
+                    bases.append(least)
+                    break
+                least = min(least, ring[c])
+        base = max(bases) if bases else min(ring)
+        count += ring[s] - base > 0 and ring[s] - base >= 0.1 * deepest
     return count
 
 soft_full = json.load(open(f"{work}/full-soft/summary.json"))
