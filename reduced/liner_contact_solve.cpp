@@ -186,9 +186,7 @@ void LinerContactSolve::place_patches(double t) {
     std::vector<int>& sectors = m_patch_sectors[c];
     patch_sectors(m_cells, m_omega * t + m_phi[c], m_patch_angle, sectors);
     std::vector<int>& cells = m_patch_cells[c];
-    cells.clear();
-    for (int j : m_patch_rows[c])
-      for (int i : sectors) cells.push_back(j * n_theta + i);
+    cells_of(m_patch_rows[c], sectors, n_theta, cells);
     const size_t n = cells.size();
     m_previous[c].assign(n, PatchLink{});
     m_read[c].assign(n, 0);

@@ -85,11 +85,17 @@ std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z
   const std::vector<int> sectors =
       patch_sectors(cells, theta, patch.circumferential / cells.geometry().radius);
   std::vector<int> out;
-  out.reserve(rows.size() * sectors.size());
+  cells_of(rows, sectors, cells.n_theta(), out);
+  return out;
+}
+
+void cells_of(const std::vector<int>& rows, const std::vector<int>& sectors, int n_theta,
+              std::vector<int>& cells) {
+  cells.clear();
+  cells.reserve(rows.size() * sectors.size());
   for (int j : rows)
     for (int i : sectors)
-      out.push_back(j * cells.n_theta() + i);
-  return out;
+      cells.push_back(j * n_theta + i);
 }
 
 double patch_compliant(const AbradableCells& cells, const std::vector<BarState>& from,

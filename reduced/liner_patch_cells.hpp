@@ -75,6 +75,11 @@ void patch_sectors(const AbradableCells& cells, double theta, double angle,
 /// [length] (>= 0) centred on `z` (within the liner's axial extent) (header).
 std::vector<int> patch_rows(const AbradableCells& cells, double z, double width);
 
+/// The cells j n_theta + i of `rows` x `sectors`, row by row, into `cells`
+/// (cleared, its capacity kept).
+void cells_of(const std::vector<int>& rows, const std::vector<int>& sectors, int n_theta,
+              std::vector<int>& cells);
+
 /// The cells under a patch at casing-frame angle theta and axial coordinate
 /// z, ascending (header); the angular window is patch.circumferential / r.
 std::vector<int> patch_cells(const AbradableCells& cells, double theta, double z,

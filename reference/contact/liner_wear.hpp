@@ -6,11 +6,11 @@
 // next to cell 0) a lobe is a peak of the depth whose prominence is at
 // least kLobeProminence times the deepest cell of the whole liner. A peak's
 // prominence is how far one descends from it, either way around the ring,
-// before reaching a deeper peak's slope: its depth less the higher of the
-// two lowest depths met on the way to a cell that ranks above it (deeper,
-// or as deep and earlier in cell order, which decides between equal
-// depths). The ring's top peak, ranked below no cell, has the depth of the
-// ring's range (its depth less the shallowest cell's). A flat top is one
+// before climbing to a cell ranked above it (deeper, or as deep and earlier
+// in cell order, which decides between equal depths): its depth less the
+// higher of the two lowest depths met on the two ways. The ring's top peak,
+// ranked below no cell, has the ring's range as its prominence (its depth
+// less the shallowest cell's). A flat top is one
 // peak; a flat ring has none. This is the peaks' 0-dimensional persistence
 // in the depth (Edelsbrunner and Harer, Computational Topology, VII.1):
 // what a user reads as lobes is what stands out of the profile, not every

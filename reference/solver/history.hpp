@@ -154,8 +154,8 @@ struct RunSummary {
   double liner_cell_area = 0.0;     ///< A = r dtheta dz of a cell [length^2]
   double liner_bar_stiffness = 0.0; ///< k = E A / h [force / length]
   double max_wear_depth = 0.0;     ///< the deepest cell's wear at the end [length]
-  /// Local maxima of the wear around the circumference above half the
-  /// deepest (liner_wear.hpp), the largest over the axial rows.
+  /// Peaks of the wear around the circumference standing out at least a
+  /// tenth of the deepest cell (liner_wear.hpp), the most over the axial rows.
   int wear_lobes = 0;
 };
 

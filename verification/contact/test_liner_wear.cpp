@@ -128,6 +128,15 @@ TEST(LinerWear, TheLinerCountIsTheMostOverItsRows) {
   EXPECT_EQ(wear_lobes({0, 0, 0}, 3, 1), 0);
 }
 
+TEST(LinerWear, TheTenthIsOfTheLinersDeepestCell) {
+  // Row 1's second top stands out 0.5 over the dip 2.5: a lobe against its
+  // own row's deepest (0.1 x 3 = 0.3), a ripple against the liner's (0.1 x
+  // 10 = 1). Row 0 has one lobe: the liner counts 1.
+  const std::vector<double> depth = {0, 10, 0, 0, 0, 0, 0, 3, 2.5, 3, 0, 0};
+  EXPECT_EQ(ring_lobes({0, 3, 2.5, 3, 0, 0}, 3.0), 2);
+  EXPECT_EQ(wear_lobes(depth, 6, 2), 1);
+}
+
 // A worn ring like the tip patches leave: k lobes 1 - cos(k theta) (depth 0
 // to 2 mm), laid down as a staircase of 4-cell plateaus.
 std::vector<double> staircase_lobes(int k, std::size_t n) {
@@ -176,24 +185,32 @@ TEST(LinerWear, PlateausOneUlpApartDoNotCountAsLobes) {
 }
 
 TEST(LinerWear, TheMergeTreeCountsWhatTheWalkCounts) {
-  // 2,000 random rings of 1 to 40 cells, depths on a grid of 0 to 5 units so
-  // that equal depths (plateaus, equal tops) are frequent.
+  // 2,000 random rings of 1 to 40 cells, depths on a grid of 0.1 (0 to 2)
+  // so that equal depths (plateaus, equal tops) are frequent, the deepest
+  // that of the ring or of another row up to 8 times deeper (a threshold of
+  // up to 1.6, so that it keeps some peaks and drops others).
   std::mt19937 random(26);
   std::uniform_int_distribution<int> size(1, 40);
-  std::uniform_int_distribution<int> level(0, 5);
-  int total = 0;
+  std::uniform_int_distribution<int> level(0, 20);
+  const double scale[] = {1.0, 2.0, 4.0, 8.0};
+  int total = 0, dropped = 0;
   for (int trial = 0; trial < 2000; ++trial) {
     std::vector<double> ring(static_cast<std::size_t>(size(random)));
     for (double& d : ring)
-      d = 0.5 * level(random);
-    // Deepest from the ring or from another row (a larger one).
-    const double deepest =
-        *std::max_element(ring.begin(), ring.end()) * (trial % 3 == 0 ? 2.0 : 1.0);
+      d = 0.1 * level(random);
+    const double deepest = *std::max_element(ring.begin(), ring.end()) * scale[trial % 4];
     const int expected = walked_lobes(ring, deepest);
     ASSERT_EQ(ring_lobes(ring, deepest), expected) << "trial " << trial;
     total += expected;
+    dropped += walked_lobes(ring, 0.0) - expected; // peaks the threshold drops
   }
-  std::printf("2000 random rings: %d lobes in all, merge tree = walk in each\n", total);
+  std::printf("2000 random rings: %d lobes in all, %d peaks dropped by the threshold, merge "
+              "tree = walk in each\n",
+              total, dropped);
+  // The comparison must see the threshold at work, or it checks the tree's
+  // shape only.
+  EXPECT_GT(dropped, 0);
+  EXPECT_GT(total, 0);
 }
 
 } // namespace
