@@ -3,7 +3,7 @@
 rsi_packages=(build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev liblapacke-dev libgsl-dev
   libgtest-dev libspectra-dev nlohmann-json3-dev libcli11-dev libbenchmark-dev python3-matplotlib
   python3-scipy python3-numpy calculix-ccx calculix-ccx-test gmsh libopenblas0-pthread libopenblas-dev
-  libopenmpi-dev openmpi-bin ninja-build)
+  libopenmpi-dev openmpi-bin ninja-build strace)
 
 # New build trees are Ninja's (an existing tree keeps the generator it was
 # made with: CMake reads CMAKE_GENERATOR only when it creates one). Ninja

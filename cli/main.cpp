@@ -19,6 +19,7 @@
 #include "command.hpp"
 #include "failure_advice.hpp"
 #include "failure_kinds.hpp"
+#include "huge_page_heap.hpp"
 #include "interruption.hpp"
 #include "output_files.hpp"
 #include "staged_output.hpp"
@@ -97,6 +98,8 @@ int run_command(rsi::Command& command, rsi::StagedOutput& output) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // Before anything else: the process may be replaced (huge_page_heap.hpp).
+  rsi::run_on_huge_page_heap(argv);
   // GSL's default error handler aborts the process; rsi checks the status
   // every GSL call returns and reports it (exit 2 or 3) instead.
   gsl_set_error_handler_off();
