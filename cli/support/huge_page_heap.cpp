@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <climits>
 #include <cstdlib>
-#include <cstring>
 
 #include <unistd.h>
 
@@ -26,20 +25,18 @@ void restore_user_tunables(const char* was) {
 } // namespace
 
 std::optional<std::string> tunables_with_huge_pages(const char* current) {
-  constexpr const char* key = "glibc.malloc.hugetlb";
-  if (current == nullptr || *current == '\0') return std::string(key) + "=1";
+  const std::string setting = "glibc.malloc.hugetlb=";
+  if (current == nullptr || *current == '\0') return setting + "1";
   // GLIBC_TUNABLES is name=value pairs separated by ':'.
   const std::string tunables(current);
   std::size_t start = 0;
   while (start <= tunables.size()) {
     const std::size_t end = std::min(tunables.find(':', start), tunables.size());
-    const std::string pair = tunables.substr(start, end - start);
-    if (pair.compare(0, std::strlen(key), key) == 0 && pair.size() > std::strlen(key) &&
-        pair[std::strlen(key)] == '=')
+    if (tunables.compare(start, std::min(setting.size(), end - start), setting) == 0)
       return std::nullopt;
     start = end + 1;
   }
-  return tunables + ":" + key + "=1";
+  return tunables + ":" + setting + "1";
 }
 
 void run_on_huge_page_heap(char** argv) {

@@ -182,10 +182,14 @@ struct Loaded {
   std::unique_ptr<FreeInterfacePool> pool;
 };
 
+ComponentCase component_case(const std::string& path) {
+  std::ifstream in(path);
+  return parse_component_case(nlohmann::json::parse(in), path);
+}
+
 std::unique_ptr<Loaded> load(const Plan& plan) {
   auto l = std::make_unique<Loaded>();
-  std::ifstream in(plan.case_file);
-  const ComponentCase cc = parse_component_case(nlohmann::json::parse(in), plan.case_file);
+  const ComponentCase cc = component_case(plan.case_file);
   Clock::time_point start = Clock::now();
   l->model = load_component(cc, {"", cache_dir()});
   std::printf("%s: %d dofs, %zu boundary dofs, K %ld nonzeros; loaded in %.2f s (ccx cache %s)\n",
@@ -603,11 +607,6 @@ void complete_craig_bampton(const ComponentCase& coarse, const char* variant, in
   EXPECT_LE(s.boundary_stiffness.ratio, 1.0);
 }
 
-ComponentCase component_case(const std::string& path) {
-  std::ifstream in(path);
-  return parse_component_case(nlohmann::json::parse(in), path);
-}
-
 // The blade at element_size 20: 2,091 dofs (the 4,101-dof default costs
 // 62-84 s here, cubic in n).
 TEST_F(Blade3dRows, CompleteCraigBamptonIsFull) {
@@ -619,7 +618,7 @@ TEST_F(Blade3dRows, CompleteCraigBamptonIsFull) {
 // The CI disk's blade and disk on 3 sectors at element_size 40: 8,253
 // dofs, the smallest this geometry meshes to (the tip's 16 stations set the
 // element size there, so 30, 40 and 60 mm give the same mesh); the 29,484
-// dofs of the CI disk would cost about 50 times as much, cubic in n.
+// dofs of the CI disk would cost about 46 times as much, cubic in n.
 TEST_F(BladedDisk3dRows, CompleteCraigBamptonIsFull) {
   ComponentCase coarse = component_case(plan().case_file);
   coarse.gmsh_bladed_disk.sectors = 3;
